@@ -1,0 +1,71 @@
+#include "base/atomic_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace pw {
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path tempPathFor(const fs::path& path) {
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  std::ostringstream name;
+  // Keep the extension last so that writers choosing a format by extension still work.
+  name << "." << path.stem().string() << ".tmp" << std::hex << (rng() & 0xffffff) << path.extension().string();
+  return path.parent_path() / name.str();
+}
+
+}  // namespace
+
+Status writeViaTempFile(const fs::path& path, const std::function<Status(const fs::path&)>& write) {
+  std::error_code ec;
+  if (path.has_parent_path() && !fs::exists(path.parent_path(), ec)) {
+    return makeError(path.string() + ": the folder " + path.parent_path().string() + " does not exist");
+  }
+  const fs::path temp = tempPathFor(path);
+  Status written = write(temp);
+  if (written && !fs::exists(temp, ec)) written = makeError(path.string() + ": nothing was written");
+  if (!written) {
+    fs::remove(temp, ec);
+    return written;
+  }
+  fs::rename(temp, path, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    return makeError(path.string() + ": cannot write: " + ec.message());
+  }
+  return {};
+}
+
+Status writeFileAtomic(const fs::path& path, std::span<const char> bytes) {
+  return writeViaTempFile(path, [&](const fs::path& temp) -> Status {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) return makeError(path.string() + ": cannot write: " + std::strerror(errno));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.flush();
+    if (!out) return makeError(path.string() + ": write failed (disk full?)");
+    return {};
+  });
+}
+
+Status writeFileAtomic(const fs::path& path, const std::string& text) {
+  return writeFileAtomic(path, std::span<const char>(text.data(), text.size()));
+}
+
+Result<std::string> readFile(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return makeError(path.string() + ": no such file");
+  if (fs::is_directory(path, ec)) return makeError(path.string() + ": is a folder, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return makeError(path.string() + ": cannot read: " + std::strerror(errno));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) return makeError(path.string() + ": read failed");
+  return buffer.str();
+}
+
+}  // namespace pw

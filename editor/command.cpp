@@ -1,0 +1,113 @@
+#include "editor/command.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace pw::editor {
+
+namespace {
+std::vector<Command>& registry() {
+  static std::vector<Command> all;
+  return all;
+}
+
+bool matches(const std::string& arg, std::string_view name, std::string_view alias) {
+  return arg == name || (!alias.empty() && arg == alias);
+}
+}  // namespace
+
+const std::vector<Command>& commands() { return registry(); }
+
+CommandRegistrar::CommandRegistrar(const Command& command) { registry().push_back(command); }
+
+int fail(std::string_view message) {
+  std::fprintf(stderr, "error: %.*s\n", static_cast<int>(message.size()), message.data());
+  return kExitFailure;
+}
+
+bool Args::flag(std::string_view name, std::string_view alias) {
+  bool found = false;
+  for (size_t i = 0; i < args_.size(); ++i) {
+    if (!used_[i] && matches(args_[i], name, alias)) used_[i] = found = true;
+  }
+  return found;
+}
+
+std::vector<std::string> Args::values(std::string_view name, std::string_view alias) {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < args_.size(); ++i) {
+    if (used_[i]) continue;
+    const std::string& a = args_[i];
+    if (matches(a, name, alias)) {
+      used_[i] = true;
+      if (i + 1 >= args_.size()) {
+        if (error_.empty()) error_ = std::string(name) + " needs a value";
+      } else {
+        used_[++i] = true;
+        out.push_back(args_[i]);
+      }
+    } else if (a.size() > name.size() && a.compare(0, name.size(), name) == 0 && a[name.size()] == '=') {
+      used_[i] = true;
+      out.push_back(a.substr(name.size() + 1));
+    }
+  }
+  return out;
+}
+
+std::optional<std::string> Args::value(std::string_view name, std::string_view alias) {
+  auto all = values(name, alias);
+  if (all.empty()) return std::nullopt;
+  if (all.size() > 1 && error_.empty()) error_ = std::string(name) + " is given more than once";
+  return all.back();
+}
+
+std::vector<std::string> Args::positionals() {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < args_.size(); ++i) {
+    const std::string& a = args_[i];
+    if (used_[i] || (a.size() > 1 && a[0] == '-')) continue;
+    used_[i] = true;
+    out.push_back(a);
+  }
+  return out;
+}
+
+Status Args::finish() const {
+  if (!error_.empty()) return makeError(error_);
+  for (size_t i = 0; i < args_.size(); ++i) {
+    if (!used_[i]) return makeError("unknown option " + args_[i]);
+  }
+  return {};
+}
+
+Result<std::pair<int, int>> parseSize(std::string_view text, std::string_view optionName) {
+  const auto bad = [&] {
+    return makeError(std::string(optionName) + " wants WIDTHxHEIGHT in pixels, e.g. 1280x720, not '" + std::string(text) + "'");
+  };
+  const size_t x = text.find('x');
+  if (x == std::string_view::npos) return bad();
+  int w = 0, h = 0;
+  auto r1 = std::from_chars(text.data(), text.data() + x, w);
+  auto r2 = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
+  if (r1.ec != std::errc() || r1.ptr != text.data() + x || r2.ec != std::errc() || r2.ptr != text.data() + text.size()) {
+    return bad();
+  }
+  constexpr int kMaxSide = 16384;
+  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide) {
+    return makeError(std::string(optionName) + " " + std::string(text) + " is out of range: each side must be 1.." +
+                     std::to_string(kMaxSide) + " pixels");
+  }
+  return std::pair{w, h};
+}
+
+Result<double> parseNumber(std::string_view text, std::string_view optionName) {
+  double v = 0;
+  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v)) {
+    return makeError(std::string(optionName) + " wants a number, not '" + std::string(text) + "'");
+  }
+  return v;
+}
+
+}  // namespace pw::editor

@@ -1,0 +1,31 @@
+// Shot files (JSON): what `measure`, `build` and `detect` read and the editor saves.
+// See the README for the format. Unknown fields are ignored (the shared corridor
+// scenes carry ground truth there, which photowalk never reads).
+#pragma once
+
+#include <filesystem>
+
+#include <opencv2/core/mat.hpp>
+
+#include "base/result.h"
+#include "metrology/shot.h"
+
+namespace pw::editor {
+
+// Parses the shot file and checks every number is present, finite and sensible.
+// Does not open the image; `shot.imagePath` is resolved against the file's folder.
+Result<metrology::Shot> readShotFile(const std::filesystem::path& path);
+
+// Reads the shot file and its image (BGR, 8 bit), filling imageWidth/imageHeight and
+// checking the corners against the image size.
+struct LoadedShot {
+  metrology::Shot shot;
+  cv::Mat image;
+};
+Result<LoadedShot> loadShot(const std::filesystem::path& path);
+
+// Writes a shot file atomically. The image path is written relative to the shot
+// file's folder where possible.
+Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& shot);
+
+}  // namespace pw::editor

@@ -1,0 +1,60 @@
+// Cameras: where the eye is, where it looks, and how it projects to pixels.
+//
+// Conventions (as VRML97): the camera looks along its local -Z, +Y is up, +X right.
+// Pixel coordinates have their origin at the top-left pixel's centre, u right,
+// v down (OpenCV's convention, the one shot files use). Clip space is Vulkan's:
+// y down, depth 0 (near) .. 1 (far).
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/scene/scene.h"
+
+namespace pw::engine {
+
+// Pinhole intrinsics in pixels for an image of a given size.
+struct Intrinsics {
+  double focalXPx = 0;
+  double focalYPx = 0;
+  double principalU = 0;  // pixel centres at integer coordinates
+  double principalV = 0;
+};
+
+struct Camera {
+  glm::vec3 position{0.0f};
+  glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};  // camera-local axes to world
+  float fieldOfViewRad = 0.785398f;  // VRML meaning: the smaller of the two angles
+  // When set, overrides fieldOfViewRad: a photo's camera, for frames that must line
+  // up with the photo pixel for pixel. Only valid for the image size it was made for.
+  std::optional<Intrinsics> intrinsics;
+  float nearM = 0.05f;
+  float farM = 2000.0f;
+};
+
+glm::quat orientationFromAxisAngle(const glm::vec4& axisAngle);
+glm::vec4 axisAngleFromOrientation(const glm::quat& q);  // angle in [0, pi], axis unit
+
+Camera cameraFromViewpoint(const Viewpoint& viewpoint);
+Viewpoint viewpointFromCamera(const Camera& camera, std::string description);
+
+// The intrinsics a camera has when drawn into a width x height frame.
+Intrinsics intrinsicsFor(const Camera& camera, int width, int height);
+
+glm::mat4 viewMatrix(const Camera& camera);  // world to camera
+glm::mat4 projectionMatrix(const Camera& camera, int width, int height);  // camera to Vulkan clip
+
+// Pixel position (u, v) of a world point, and its depth in front of the camera in
+// metres (negative: behind it).
+glm::dvec3 projectToPixel(const Camera& camera, int width, int height, const glm::vec3& world);
+
+// Direction the camera looks in (world), and its up vector.
+glm::vec3 forwardOf(const Camera& camera);
+glm::vec3 upOf(const Camera& camera);
+
+// Orientation looking from `eye` towards `target` with world +Y up (no roll).
+glm::quat lookAtOrientation(const glm::vec3& eye, const glm::vec3& target);
+
+}  // namespace pw::engine

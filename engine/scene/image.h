@@ -1,0 +1,36 @@
+// RGBA8 images and their PNG/JPEG files.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "base/result.h"
+
+namespace pw::engine {
+
+// 8-bit RGBA, rows top to bottom, no padding. Colour values are sRGB-encoded.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgba;  // width * height * 4 bytes
+
+  bool empty() const { return width <= 0 || height <= 0; }
+  uint8_t* pixel(int x, int y) { return rgba.data() + (static_cast<size_t>(y) * width + x) * 4; }
+  const uint8_t* pixel(int x, int y) const { return rgba.data() + (static_cast<size_t>(y) * width + x) * 4; }
+  bool operator==(const Image&) const = default;
+};
+
+Image makeImage(int width, int height, uint32_t fillRgba = 0x000000ff);
+
+// Loads PNG, JPEG (and the other formats stb_image reads) as RGBA8. The error names
+// the file and says why it could not be read.
+Result<Image> loadImage(const std::filesystem::path& path);
+Result<Image> decodeImage(const uint8_t* bytes, size_t size, const std::string& nameForErrors);
+
+// Writes PNG (or JPEG when the extension is .jpg/.jpeg, quality 92) atomically.
+Status saveImage(const std::filesystem::path& path, const Image& image);
+// Encodes PNG into memory (for glTF embedding).
+Result<std::vector<uint8_t>> encodePng(const Image& image);
+
+}  // namespace pw::engine

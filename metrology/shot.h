@@ -1,0 +1,67 @@
+// A shot: one photo, the camera that took it, and the corridor's eight corners in it.
+//
+// Corner names follow the seed paper's table 1 (see ../shared/METHOD.md):
+//   P1 P2  far wall top-left / top-right      P3 P4  far wall bottom-left / bottom-right
+//   P5 P6  floor near-left / near-right       P7 P8  ceiling near-left / near-right
+// Pixel coordinates: origin at the centre of the top-left pixel, u right, v down.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace pw::metrology {
+
+enum Corner : int { P1 = 0, P2, P3, P4, P5, P6, P7, P8 };
+inline constexpr int kCornerCount = 8;
+inline const char* cornerName(int corner) {
+  static const char* const kNames[kCornerCount] = {"P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"};
+  return (corner >= 0 && corner < kCornerCount) ? kNames[corner] : "P?";
+}
+
+// The five planes of a corridor, each as four corners in order around the quad
+// (the order the seed paper gives: the rectified texture's top-left, top-right,
+// bottom-right, bottom-left as seen from inside the corridor).
+enum class Plane : int { kFarWall = 0, kLeftWall, kRightWall, kFloor, kCeiling };
+inline constexpr int kPlaneCount = 5;
+inline constexpr std::array<std::array<int, 4>, kPlaneCount> kPlaneCorners{{
+    {P1, P2, P4, P3},  // far wall
+    {P7, P1, P3, P5},  // left wall
+    {P2, P8, P6, P4},  // right wall
+    {P3, P4, P6, P5},  // floor
+    {P7, P8, P2, P1},  // ceiling
+}};
+inline const char* planeName(Plane plane) {
+  static const char* const kNames[kPlaneCount] = {"far_wall", "left_wall", "right_wall", "floor", "ceiling"};
+  return kNames[static_cast<int>(plane)];
+}
+
+// Two corners whose true distance is known: fixes the scale instead of (or as a
+// check on) the camera height.
+struct ReferenceLength {
+  int from = P3;
+  int to = P4;
+  double lengthM = 0;
+};
+
+struct Shot {
+  std::string imagePath;  // as resolved for opening (relative to the shot file's folder)
+  int imageWidth = 0;     // filled from the image when it is loaded
+  int imageHeight = 0;
+  double focalPx = 0;
+  // Set instead of focalPx when the file gives focal_mm and sensor_width_mm:
+  // focalPx = focalOverSensorWidth * imageWidth once the image is known.
+  std::optional<double> focalOverSensorWidth;
+  std::optional<glm::dvec2> principalPointPx;  // default: ((w-1)/2, (h-1)/2)
+  std::optional<double> cameraHeightM;
+  std::array<glm::dvec2, kCornerCount> cornersPx{};
+  std::optional<ReferenceLength> reference;
+
+  glm::dvec2 principalPoint() const {
+    return principalPointPx.value_or(glm::dvec2((imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5));
+  }
+};
+
+}  // namespace pw::metrology

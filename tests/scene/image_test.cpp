@@ -1,0 +1,48 @@
+#include "engine/scene/image.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace pw::engine {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path tempDir() {
+  fs::path d = fs::temp_directory_path() / ("pw_image_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  fs::create_directories(d);
+  return d;
+}
+
+TEST(Image, PngRoundTripIsExact) {
+  Image img = makeImage(5, 3, 0x11223344);
+  img.pixel(4, 2)[0] = 200;
+  const fs::path path = tempDir() / "round.png";
+  ASSERT_TRUE(saveImage(path, img).ok());
+  auto back = loadImage(path);
+  ASSERT_TRUE(back.ok()) << back.message();
+  EXPECT_EQ(*back, img);
+}
+
+TEST(Image, MissingFileNamesTheFile) {
+  auto r = loadImage("/nonexistent/brick.png");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("/nonexistent/brick.png"), std::string::npos);
+}
+
+TEST(Image, CorruptFileIsAnErrorNotACrash) {
+  const fs::path path = tempDir() / "corrupt.png";
+  std::ofstream(path) << "\x89PNG\r\n\x1a\n garbage";
+  auto r = loadImage(path);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("corrupt.png"), std::string::npos);
+}
+
+TEST(Image, SaveIntoMissingFolderFailsCleanly) {
+  Status s = saveImage("/nonexistent-folder/x.png", makeImage(2, 2));
+  EXPECT_FALSE(s.ok());
+}
+
+}  // namespace
+}  // namespace pw::engine
