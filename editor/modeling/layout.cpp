@@ -1,0 +1,159 @@
+#include "editor/modeling/layout.h"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "base/atomic_file.h"
+
+namespace pw::modeling {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+Result<double> finiteNumber(const json& value, const std::string& what) {
+  if (!value.is_number() || !std::isfinite(value.get<double>())) return makeError(what + " must be a finite number");
+  return value.get<double>();
+}
+
+}  // namespace
+
+Result<Layout> readLayoutFile(const fs::path& path) {
+  const std::string where = path.string();
+  auto text = readFile(path);
+  if (!text) return text.error();
+  const json doc = json::parse(*text, nullptr, false);
+  if (doc.is_discarded()) return makeError(where + ": not valid JSON");
+  if (!doc.is_object() || !doc.contains("corridors") || !doc["corridors"].is_array() || doc["corridors"].empty()) {
+    return makeError(where + ": a layout file is {\"corridors\": [ ... ]} with at least one corridor");
+  }
+  Layout layout;
+  for (const json& item : doc["corridors"]) {
+    const std::string at = where + ": corridor " + std::to_string(layout.corridors.size() + 1);
+    if (!item.is_object()) return makeError(at + " must be an object");
+    LayoutEntry entry;
+    entry.name = item.value("name", "corridor" + std::to_string(layout.corridors.size() + 1));
+    for (const LayoutEntry& other : layout.corridors) {
+      if (other.name == entry.name) return makeError(at + ": the name \"" + entry.name + "\" is used twice");
+    }
+    if (!item.contains("shot") || !item["shot"].is_string()) return makeError(at + " needs \"shot\": the shot file");
+    entry.shot = item["shot"].get<std::string>();
+    if (entry.shot.is_relative()) entry.shot = (path.parent_path() / entry.shot).lexically_normal();
+    if (item.contains("attach")) {
+      const json& a = item["attach"];
+      if (!a.is_object() || !a.contains("to") || !a["to"].is_string()) {
+        return makeError(at + ": attach is {\"to\": NAME, \"side\": \"far\"|\"left\"|\"right\", \"offset_m\": M}");
+      }
+      Attachment attach;
+      const std::string to = a["to"].get<std::string>();
+      for (size_t i = 0; i < layout.corridors.size(); ++i) {
+        if (layout.corridors[i].name == to) attach.to = static_cast<int>(i);
+      }
+      if (attach.to < 0) return makeError(at + ": attaches to \"" + to + "\", which is not listed before it");
+      const std::string side = a.value("side", "far");
+      if (side == "far") attach.side = Side::kFar;
+      else if (side == "left") attach.side = Side::kLeft;
+      else if (side == "right") attach.side = Side::kRight;
+      else return makeError(at + ": side must be \"far\", \"left\" or \"right\", not \"" + side + "\"");
+      if (a.contains("offset_m")) {
+        auto offset = finiteNumber(a["offset_m"], at + ": offset_m");
+        if (!offset) return offset.error();
+        attach.offsetM = *offset;
+      }
+      entry.attach = attach;
+    } else {
+      if (item.contains("position")) {
+        const json& p = item["position"];
+        if (!p.is_array() || p.size() != 3) return makeError(at + ": position is [x, y, z] in metres");
+        for (int i = 0; i < 3; ++i) {
+          auto v = finiteNumber(p[i], at + ": position");
+          if (!v) return v.error();
+          entry.position[i] = *v;
+        }
+      }
+      if (item.contains("rotation_deg")) {
+        auto r = finiteNumber(item["rotation_deg"], at + ": rotation_deg");
+        if (!r) return r.error();
+        entry.rotationDeg = *r;
+      }
+    }
+    layout.corridors.push_back(std::move(entry));
+  }
+  return layout;
+}
+
+Layout chainLayout(const std::vector<fs::path>& shots) {
+  Layout layout;
+  for (size_t i = 0; i < shots.size(); ++i) {
+    LayoutEntry entry;
+    entry.name = shots[i].stem().string();
+    entry.shot = shots[i];
+    if (i > 0) entry.attach = Attachment{static_cast<int>(i) - 1, Side::kFar, 0.0};
+    layout.corridors.push_back(entry);
+  }
+  // Names must be unique for the model's DEF names.
+  for (size_t i = 0; i < layout.corridors.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) {
+      if (layout.corridors[j].name == layout.corridors[i].name) layout.corridors[i].name += "_" + std::to_string(i + 1);
+    }
+  }
+  return layout;
+}
+
+Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<CorridorBox>& boxes) {
+  BuildingPlan plan;
+  const size_t n = layout.corridors.size();
+  if (boxes.size() != n) return makeError("layout and measured corridors differ in number");
+  plan.worldFromCorridor.resize(n);
+  plan.attached.assign(n, false);
+  constexpr double kEps = 1e-6;
+  for (size_t i = 0; i < n; ++i) {
+    const LayoutEntry& entry = layout.corridors[i];
+    const CorridorBox& box = boxes[i];
+    if (!entry.attach) {
+      plan.worldFromCorridor[i] = glm::rotate(glm::translate(glm::dmat4(1.0), entry.position),
+                                              glm::radians(entry.rotationDeg), glm::dvec3(0, 1, 0));
+      continue;
+    }
+    const Attachment& a = *entry.attach;
+    const CorridorBox& host = boxes[a.to];
+    const std::string who = "layout: corridor \"" + entry.name + "\" attached to \"" + layout.corridors[a.to].name + "\"";
+    plan.attached[i] = true;
+    const double height = std::min(host.heightM, box.heightM);
+    glm::dvec3 hostLocal;     // the guest's near-end centre, in the host's frame
+    double turnDeg = 0;       // the guest's rotation relative to the host
+    Opening inHost{a.to, Surface::kFarWall, {}};
+    double guestOverlap0 = 0, guestOverlap1 = box.widthM;  // along the guest's near-end s axis
+    if (a.side == Side::kFar) {
+      hostLocal = {a.offsetM, 0, -host.lengthM};
+      // The guest's x range seen on the host's far wall (s = x + W_host / 2).
+      const double x0 = std::max(a.offsetM - box.widthM / 2, -host.widthM / 2);
+      const double x1 = std::min(a.offsetM + box.widthM / 2, host.widthM / 2);
+      if (x1 - x0 < 0.3) return makeError(who + ": offset_m " + std::to_string(a.offsetM) + " leaves less than 0.3 m of opening");
+      inHost.rect = {x0 + host.widthM / 2, 0, x1 + host.widthM / 2, height};
+      // Guest near end: s = W_guest/2 - x_guest, x_guest = x_host - offset.
+      guestOverlap0 = box.widthM / 2 - (x1 - a.offsetM);
+      guestOverlap1 = box.widthM / 2 - (x0 - a.offsetM);
+    } else {
+      const bool left = a.side == Side::kLeft;
+      if (a.offsetM - box.widthM / 2 < -kEps || a.offsetM + box.widthM / 2 > host.lengthM + kEps) {
+        return makeError(who + ": an opening " + std::to_string(box.widthM) + " m wide at offset_m " +
+                         std::to_string(a.offsetM) + " does not fit in a wall " + std::to_string(host.lengthM) + " m long");
+      }
+      hostLocal = {left ? -host.widthM / 2 : host.widthM / 2, 0, -a.offsetM};
+      turnDeg = left ? 90.0 : -90.0;
+      inHost.surface = left ? Surface::kLeftWall : Surface::kRightWall;
+      const double centre = left ? a.offsetM : host.lengthM - a.offsetM;
+      inHost.rect = {centre - box.widthM / 2, 0, centre + box.widthM / 2, height};
+    }
+    plan.worldFromCorridor[i] = glm::rotate(glm::translate(plan.worldFromCorridor[a.to], hostLocal),
+                                            glm::radians(turnDeg), glm::dvec3(0, 1, 0));
+    plan.openings.push_back(inHost);
+    plan.openings.push_back(Opening{static_cast<int>(i), Surface::kNearEnd, {guestOverlap0, 0, guestOverlap1, height}});
+  }
+  return plan;
+}
+
+}  // namespace pw::modeling

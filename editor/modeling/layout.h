@@ -1,0 +1,71 @@
+// Buildings of several corridors (the seed paper's figure 14): where each corridor
+// stands, and the openings where one corridor opens into another.
+//
+// Layout file (JSON; README "Layout files"):
+//   {"corridors": [
+//     {"name": "hall", "shot": "hall.json", "position": [0, 0, 0], "rotation_deg": 0},
+//     {"name": "wing", "shot": "wing.json", "attach": {"to": "hall", "side": "left", "offset_m": 3.5}},
+//     {"name": "end",  "shot": "end.json",  "attach": {"to": "hall", "side": "far",  "offset_m": 0}}]}
+// A corridor is either placed (position of its near-end centre on the floor, rotation
+// about +Y in degrees, counter-clockwise seen from above) or attached to one listed
+// before it: "far" puts its near end on the other's far wall, offset_m to the side
+// (along the other's +x); "left"/"right" put its near end on that side wall, offset_m
+// from the other's near end to its centre line. Shot paths are relative to the file.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "base/result.h"
+#include "editor/modeling/corridor_frame.h"
+
+namespace pw::modeling {
+
+enum class Side { kFar, kLeft, kRight };
+
+struct Attachment {
+  int to = -1;  // index of an earlier corridor
+  Side side = Side::kFar;
+  double offsetM = 0;
+};
+
+struct LayoutEntry {
+  std::string name;
+  std::filesystem::path shot;
+  glm::dvec3 position{0.0};
+  double rotationDeg = 0;
+  std::optional<Attachment> attach;
+};
+
+struct Layout {
+  std::vector<LayoutEntry> corridors;
+};
+
+Result<Layout> readLayoutFile(const std::filesystem::path& path);
+
+// The layout used when several shots are given without a layout file: each
+// corridor continues from the previous one's far end, centred.
+Layout chainLayout(const std::vector<std::filesystem::path>& shots);
+
+// An opening cut into one corridor's surface, in that surface's (s, t) coordinates.
+struct Opening {
+  int corridor = -1;
+  Surface surface = Surface::kFarWall;
+  Rect rect;
+};
+
+struct BuildingPlan {
+  std::vector<glm::dmat4> worldFromCorridor;  // one per corridor
+  std::vector<Opening> openings;              // in hosts' walls and in guests' near ends
+  std::vector<bool> attached;                 // true: the corridor starts at another's wall
+};
+
+// Places every corridor and finds the openings. Errors name the corridor and say
+// what is wrong (an opening wider than the wall, an offset beyond the wall's end).
+Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<CorridorBox>& boxes);
+
+}  // namespace pw::modeling
