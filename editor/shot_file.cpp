@@ -10,6 +10,7 @@
 namespace pw::editor {
 namespace fs = std::filesystem;
 using nlohmann::json;
+using nlohmann::ordered_json;
 using metrology::kCornerCount;
 
 namespace {
@@ -46,8 +47,12 @@ Result<metrology::Shot> readShotFile(const fs::path& path) {
   const std::string where = path.string();
   auto text = readFile(path);
   if (!text) return text.error();
-  json doc = json::parse(*text, nullptr, /*allow_exceptions=*/false);
-  if (doc.is_discarded()) return makeError(where + ": not valid JSON");
+  json doc;
+  try {
+    doc = json::parse(*text);
+  } catch (const json::parse_error& e) {
+    return makeError(where + ": not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")");
+  }
   if (!doc.is_object()) return makeError(where + ": a shot file is a JSON object");
 
   metrology::Shot shot;
@@ -103,7 +108,11 @@ Result<metrology::Shot> readShotFile(const fs::path& path) {
     const json& ref = doc["reference"];
     if (!ref.is_object()) return makeError(where + ": reference must be {\"from\": \"P3\", \"to\": \"P4\", \"length_m\": L}");
     metrology::ReferenceLength reference;
-    const std::string from = ref.value("from", ""), to = ref.value("to", "");
+    auto name = [&](const char* key) {
+      auto it = ref.find(key);
+      return (it != ref.end() && it->is_string()) ? it->get<std::string>() : std::string();
+    };
+    const std::string from = name("from"), to = name("to");
     reference.from = cornerIndex(from);
     reference.to = cornerIndex(to);
     if (reference.from < 0 || reference.to < 0 || reference.from == reference.to) {
@@ -114,6 +123,16 @@ Result<metrology::Shot> readShotFile(const fs::path& path) {
     if (*length <= 0) return makeError(where + ": reference length_m must be positive");
     reference.lengthM = *length;
     shot.reference = reference;
+  }
+  if (doc.contains("image_size")) {
+    const json& size = doc["image_size"];
+    if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
+        size[0].get<int64_t>() <= 0 || size[1].get<int64_t>() <= 0 || size[0].get<int64_t>() > 1000000 ||
+        size[1].get<int64_t>() > 1000000) {
+      return makeError(where + ": image_size must be [width, height] in pixels, not " + size.dump());
+    }
+    shot.imageWidth = size[0].get<int>();
+    shot.imageHeight = size[1].get<int>();
   }
   if (!shot.cameraHeightM && !shot.reference) {
     return makeError(where + ": give camera_height_m or a reference length; without one the scale is unknown");
@@ -135,6 +154,11 @@ Result<LoadedShot> loadShot(const fs::path& path) {
     loaded.image.release();
   }
   if (loaded.image.empty()) return makeError(path.string() + ": image " + s.imagePath + " is not a readable PNG/JPEG");
+  if (s.imageWidth > 0 && (s.imageWidth != loaded.image.cols || s.imageHeight != loaded.image.rows)) {
+    return makeError(path.string() + ": image_size " + std::to_string(s.imageWidth) + "x" + std::to_string(s.imageHeight) +
+                     " does not match the image " + s.imagePath + ", which is " + std::to_string(loaded.image.cols) + "x" +
+                     std::to_string(loaded.image.rows) + "; the corners belong to another size");
+  }
   s.imageWidth = loaded.image.cols;
   s.imageHeight = loaded.image.rows;
   if (s.focalOverSensorWidth) s.focalPx = *s.focalOverSensorWidth * s.imageWidth;
@@ -168,6 +192,91 @@ Status writeShotFile(const fs::path& path, const metrology::Shot& shot) {
                         {"length_m", shot.reference->lengthM}};
   }
   return writeFileAtomic(path, doc.dump(1) + "\n");
+}
+
+}  // namespace pw::editor
+
+namespace pw::editor {
+
+namespace {
+
+// "+ 0.0" turns -0 into 0, which reads better.
+ordered_json vec(const glm::dvec2& v) { return ordered_json::array({v.x + 0.0, v.y + 0.0}); }
+ordered_json vec(const glm::dvec3& v) { return ordered_json::array({v.x + 0.0, v.y + 0.0, v.z + 0.0}); }
+
+// A vanishing point as {"px": [u, v]} or, at infinity, {"direction": [du, dv]}.
+ordered_json vanishingJson(const metrology::VanishingPoint& vp) {
+  ordered_json out = vp.finite ? ordered_json{{"px", vec(vp.px)}} : ordered_json{{"direction", vec(vp.direction)}};
+  out["residual_px"] = vp.residualPx;
+  return out;
+}
+
+// True when every number in the document is finite (nlohmann would print NaN as null).
+bool allFinite(const ordered_json& j) {
+  if (j.is_number_float()) return std::isfinite(j.get<double>());
+  if (j.is_array() || j.is_object()) {
+    for (const auto& item : j) {
+      if (!allFinite(item)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+Result<std::string> measurementJson(const metrology::Measurement& m) {
+  using namespace metrology;
+  ordered_json out;
+  out["method"] = methodName(m.method);
+  out["width_m"] = m.size.widthM;
+  out["height_m"] = m.size.heightM;
+  out["length_m"] = m.size.lengthM;
+  out["sigma_m"] = {{"width_m", m.sigma.widthM}, {"height_m", m.sigma.heightM}, {"length_m", m.sigma.lengthM}};
+  out["sigma_corner_px"] = m.cornerSigmaPx;
+  out["vanishing_point_px"] = vec(m.vanishing.corridor.px);
+  out["vanishing_residual_px"] = m.vanishing.corridor.residualPx;
+  out["horizontal_vanishing_point"] = vanishingJson(m.vanishing.horizontal);
+  out["vertical_vanishing_point"] = vanishingJson(m.vanishing.vertical);
+  out["horizon"] = vec(m.horizon);
+  ordered_json rotation = ordered_json::array();
+  for (int row = 0; row < 3; ++row) {
+    rotation.push_back({m.pose.worldFromCamera[0][row], m.pose.worldFromCamera[1][row], m.pose.worldFromCamera[2][row]});
+  }
+  out["camera"] = {
+      {"height_m", m.cameraHeightM},
+      {"focal_px", m.camera.focalPx},
+      {"principal_point_px", vec(m.camera.principalPointPx)},
+      {"yaw_deg", m.pose.yawDeg},
+      {"pitch_deg", m.pose.pitchDeg},
+      {"roll_deg", m.pose.rollDeg},
+      {"position_m", vec(m.pose.positionM)},
+      {"world_from_camera", rotation},
+      {"sigma", {{"yaw_deg", m.poseSigma.yawDeg},
+                 {"pitch_deg", m.poseSigma.pitchDeg},
+                 {"roll_deg", m.poseSigma.rollDeg},
+                 {"position_m", vec(m.poseSigma.positionM)}}},
+  };
+  out["reprojection_rms_px"] = m.reprojectionRmsPx;
+  ordered_json corners = ordered_json::object(), reprojected = ordered_json::object();
+  for (int i = 0; i < kCornerCount; ++i) {
+    corners[cornerName(i)] = vec(m.cornersM[i]);
+    reprojected[cornerName(i)] = vec(m.reprojectedPx[i]);
+  }
+  out["corners_m"] = corners;
+  out["reprojected_px"] = reprojected;
+  if (m.reference) {
+    out["reference"] = {{"from", cornerName(m.reference->from)},
+                        {"to", cornerName(m.reference->to)},
+                        {"given_m", m.reference->givenM},
+                        {"measured_m", m.reference->measuredM},
+                        {"error_percent", m.reference->errorPercent},
+                        {"used_for_scale", m.reference->usedForScale}};
+  }
+  out["frame"] =
+      "metres, right-handed, y up; floor y=0; near corners P5..P8 at z=0, far wall at z=-length; x from -width/2 to "
+      "width/2; world_from_camera rows, camera looking along its -z with y up";
+  if (!allFinite(out)) return makeError("the measurement holds a number that is not finite; the corners are degenerate");
+  return out.dump(1);
 }
 
 }  // namespace pw::editor

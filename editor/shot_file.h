@@ -8,6 +8,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
+#include "metrology/measure.h"
 #include "metrology/shot.h"
 
 namespace pw::editor {
@@ -27,5 +28,12 @@ Result<LoadedShot> loadShot(const std::filesystem::path& path);
 // Writes a shot file atomically. The image path is written relative to the shot
 // file's folder where possible.
 Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& shot);
+
+// The measurement as one JSON object (what `photowalk measure` prints): width_m,
+// height_m, length_m, sigma_m {...}, vanishing_point_px, camera {height_m, focal_px,
+// yaw_deg, pitch_deg, roll_deg, position_m, world_from_camera, sigma}, horizon,
+// reprojection_rms_px, corners_m, reprojected_px, reference (when given). Fails
+// rather than print a NaN or infinity.
+Result<std::string> measurementJson(const metrology::Measurement& measurement);
 
 }  // namespace pw::editor
