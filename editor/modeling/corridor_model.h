@@ -1,0 +1,64 @@
+// One measured corridor as a textured, true-scale model (issue: photo to walkable
+// model). Textures are cut straight from the photo through the measured camera, so
+// that rendering the model from that camera gives the photo back pixel for pixel.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "base/result.h"
+#include "editor/modeling/layout.h"
+#include "engine/scene/camera.h"
+#include "engine/scene/scene.h"
+#include "metrology/measure.h"
+
+namespace pw::modeling {
+
+struct ModelOptions {
+  bool lit = false;          // false: photo-lit (no Material, headlight off); true: the seed paper's lighting
+  double pxPerM = 0;         // texture resolution; 0: the photo's own best on each plane
+  int maxTextureSide = 4096;
+};
+
+// The part of one surface that has a texture, and the texture.
+struct SurfaceTexture {
+  Rect rect;            // (s, t) range the texture covers (corridor_frame.h)
+  engine::Image image;  // RGBA, sRGB; rows top to bottom = t from rect.t1 down to rect.t0
+  double pxPerM = 0;
+  double coveredFraction = 0;  // share of the texture the photo shows (the rest is filled)
+};
+
+struct CorridorModel {
+  std::string name;
+  CorridorBox box;
+  metrology::Measurement measurement;
+  int photoWidth = 0;
+  int photoHeight = 0;
+  // How far towards the camera (z > 0) the photo shows the floor, walls and ceiling;
+  // beyond that, up to behind the camera, surfaces continue untextured.
+  double photoNearM = 0;
+  double untexturedNearM = 0;
+  std::array<std::optional<SurfaceTexture>, 5> textures;  // far wall, left, right, floor, ceiling
+  std::array<glm::vec3, 5> meanColor{};                   // linear-free sRGB 0..1, for untextured parts
+};
+
+// Cuts the textures out of the photo (BGR, 8 bit) for the measured corridor.
+// `attached`: the corridor starts at another's wall, so nothing runs towards its camera.
+Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,
+                                        const metrology::Measurement& measurement, bool attached,
+                                        const ModelOptions& options);
+
+// A whole building (or one corridor): shapes, lights, viewpoints, navigation.
+// `plan` places the corridors and holds the openings.
+engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, const BuildingPlan& plan,
+                                const ModelOptions& options);
+
+// The camera that took corridor 0's photo, in the building's world frame, with the
+// photo's intrinsics: rendering from it at the photo's size lines up with the photo.
+engine::Camera photoCamera(const metrology::Measurement& measurement, const glm::dmat4& worldFromCorridor);
+
+}  // namespace pw::modeling

@@ -1,0 +1,34 @@
+#include "editor/pipeline.h"
+
+namespace pw::editor {
+
+Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options) {
+  auto loaded = loadShot(path);
+  if (!loaded) return loaded.error();
+  auto measurement = metrology::measureCorridor(loaded->shot, options);
+  if (!measurement) return makeError(path.string() + ": " + measurement.message());
+  return MeasuredShot{std::move(*loaded), std::move(*measurement)};
+}
+
+Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,
+                              const metrology::MeasureOptions& measureOptions) {
+  BuiltModel model;
+  model.layout = layout;
+  std::vector<modeling::CorridorBox> boxes;
+  for (const modeling::LayoutEntry& entry : layout.corridors) {
+    auto measured = measureShotFile(entry.shot, measureOptions);
+    if (!measured) return measured.error();
+    auto corridor = modeling::makeCorridorModel(entry.name, measured->loaded.image, measured->measurement,
+                                                entry.attach.has_value(), options);
+    if (!corridor) return corridor.error();
+    boxes.push_back(corridor->box);
+    model.corridors.push_back(std::move(*corridor));
+  }
+  auto plan = modeling::planBuilding(layout, boxes);
+  if (!plan) return plan.error();
+  model.plan = std::move(*plan);
+  model.scene = modeling::makeBuildingScene(model.corridors, model.plan, options);
+  return model;
+}
+
+}  // namespace pw::editor

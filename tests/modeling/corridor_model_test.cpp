@@ -1,0 +1,125 @@
+#include "editor/modeling/corridor_model.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "engine/scene/collision.h"
+#include "metrology/measure.h"
+
+namespace pw::modeling {
+namespace {
+
+// corridor_a of ../shared/corridors, its shot part only.
+metrology::Shot corridorA() {
+  metrology::Shot shot;
+  shot.imagePath = std::string(PW_SHARED_DIR) + "/corridors/corridor_a.png";
+  shot.imageWidth = 800;
+  shot.imageHeight = 600;
+  shot.focalPx = 692.820323;
+  shot.principalPointPx = glm::dvec2(399.5, 299.5);
+  shot.cameraHeightM = 1.5;
+  shot.cornersPx = {glm::dvec2(340.1154, 235.1667), {458.8846, 235.1667}, {340.1154, 373.7307}, {458.8846, 373.7307},
+                    {214.7479, 530.4401},           {584.2521, 530.4401}, {214.7479, 99.3519},  {584.2521, 99.3519}};
+  return shot;
+}
+
+class CorridorModelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const metrology::Shot shot = corridorA();
+    if (!std::filesystem::exists(shot.imagePath)) GTEST_SKIP() << "no " << shot.imagePath;
+    photo_ = cv::imread(shot.imagePath, cv::IMREAD_COLOR);
+    auto m = metrology::measureCorridor(shot);
+    ASSERT_TRUE(m.ok()) << m.message();
+    measurement_ = *m;
+  }
+  cv::Mat photo_;
+  metrology::Measurement measurement_;
+};
+
+TEST_F(CorridorModelTest, TexturesRunTowardsTheCameraAsFarAsThePhotoShows) {
+  auto model = makeCorridorModel("a", photo_, measurement_, false, {});
+  ASSERT_TRUE(model.ok()) << model.message();
+  // The camera stands 4.5 m before the near corners; the floor is seen to about
+  // 3.9 m (where the image's bottom row meets it: depth f h / (v - cv) = 3.45 m).
+  EXPECT_GT(model->photoNearM, 0.8);
+  EXPECT_LT(model->photoNearM, 4.5);
+  EXPECT_NEAR(model->untexturedNearM, measurement_.pose.positionM.z + 1.0, 1e-9);
+  for (const auto& tex : model->textures) {
+    ASSERT_TRUE(tex);
+    EXPECT_GT(tex->coveredFraction, 0.5);
+    EXPECT_GE(tex->image.width, 2);
+  }
+}
+
+// Each texture's pixel at a model point has the colour the photo has where the
+// measured camera sees that point: the texture is cut through the same camera.
+TEST_F(CorridorModelTest, TexturePixelsMatchThePhotoThroughTheCamera) {
+  auto model = makeCorridorModel("a", photo_, measurement_, false, {});
+  ASSERT_TRUE(model.ok()) << model.message();
+  const SurfaceTexture& floor = *model->textures[static_cast<int>(Surface::kFloor)];
+  const Panel panel = surfacePanel(Surface::kFloor, model->box, model->photoNearM);
+  double sumSq = 0;
+  int n = 0;
+  for (double fs = 0.1; fs < 0.95; fs += 0.1) {
+    for (double ft = 0.05; ft < 0.95; ft += 0.05) {
+      const double s = floor.rect.s0 + fs * (floor.rect.s1 - floor.rect.s0);
+      const double t = floor.rect.t0 + ft * (floor.rect.t1 - floor.rect.t0);
+      const glm::dvec3 px = metrology::projectWithMeasurement(measurement_, panel.point(s, t));
+      if (px.z <= 0 || px.x < 1 || px.y < 1 || px.x > photo_.cols - 2 || px.y > photo_.rows - 2) continue;
+      const int tx = static_cast<int>(fs * floor.image.width), ty = static_cast<int>((1 - ft) * floor.image.height);
+      const uint8_t* texel = floor.image.pixel(tx, ty);
+      const cv::Vec3b photoPx = photo_.at<cv::Vec3b>(static_cast<int>(std::lround(px.y)), static_cast<int>(std::lround(px.x)));
+      for (int c = 0; c < 3; ++c) {
+        const double d = double(texel[c]) - photoPx[2 - c];
+        sumSq += d * d;
+      }
+      n += 3;
+    }
+  }
+  ASSERT_GT(n, 100);
+  // Nearest-pixel sampling of a wood texture: allow its local contrast, not a misplacement.
+  EXPECT_LT(std::sqrt(sumSq / n), 20.0);
+}
+
+TEST_F(CorridorModelTest, SceneHasFivePlanesNearStripsViewpointsAndNoMaterials) {
+  auto model = makeCorridorModel("a", photo_, measurement_, false, {});
+  ASSERT_TRUE(model.ok());
+  const std::vector<CorridorBox> boxes{model->box};
+  auto plan = planBuilding(chainLayout({"a.json"}), boxes);
+  ASSERT_TRUE(plan.ok());
+  const engine::Scene scene = makeBuildingScene({*model}, *plan, {});
+  EXPECT_EQ(scene.shapes.size(), 9u);  // five planes, four untextured strips (not the far wall)
+  for (const auto& shape : scene.shapes) EXPECT_FALSE(shape.appearance && shape.appearance->material);
+  ASSERT_GE(scene.viewpoints.size(), 4u);
+  EXPECT_EQ(scene.viewpoints[0].description, "Photo");
+  EXPECT_EQ(scene.viewpoints[3].description, "Overview");
+  EXPECT_FALSE(scene.navigation.headlight);
+  EXPECT_NEAR(scene.navigation.avatarHeightM, 1.5f, 1e-6f);
+  // A person at the Photo viewpoint stands on the floor between walls.
+  const auto world = engine::CollisionWorld::fromScene(scene);
+  const glm::vec3 eye = scene.viewpoints[0].position;
+  auto down = world.raycast(eye, {0, -1, 0}, 10);
+  ASSERT_TRUE(down);
+  EXPECT_NEAR(down->distance, 1.5f, 0.01f);
+  EXPECT_TRUE(world.raycast(eye, {-1, 0, 0}, 10));
+  EXPECT_TRUE(world.raycast(eye, {1, 0, 0}, 10));
+}
+
+TEST_F(CorridorModelTest, LitModelHasMaterialsLightsAndHeadlight) {
+  ModelOptions options;
+  options.lit = true;
+  auto model = makeCorridorModel("a", photo_, measurement_, false, options);
+  ASSERT_TRUE(model.ok());
+  auto plan = planBuilding(chainLayout({"a.json"}), {model->box});
+  const engine::Scene scene = makeBuildingScene({*model}, *plan, options);
+  for (const auto& shape : scene.shapes) EXPECT_TRUE(shape.appearance && shape.appearance->material);
+  EXPECT_GE(scene.lights.size(), 2u);
+  EXPECT_TRUE(scene.navigation.headlight);
+}
+
+}  // namespace
+}  // namespace pw::modeling
