@@ -1,5 +1,9 @@
 #include "editor/pipeline.h"
 
+#include <algorithm>
+
+#include "editor/modeling/tour.h"
+
 namespace pw::editor {
 
 Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options) {
@@ -28,6 +32,14 @@ Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::Mo
   if (!plan) return plan.error();
   model.plan = std::move(*plan);
   model.scene = modeling::makeBuildingScene(model.corridors, model.plan, options);
+
+  // The model carries its own tour, so that `photowalk tour MODEL.wrl` can walk it.
+  const modeling::CorridorModel& first = model.corridors.front();
+  modeling::TourOptions tour;
+  tour.eyeHeightM = first.measurement.cameraHeightM;
+  tour.startZ = std::max(0.0, std::min(first.measurement.pose.positionM.z, first.untexturedNearM - 0.5));
+  model.scene.info.push_back(
+      modeling::encodeTourInfo(modeling::tourWaypoints(model.layout, boxes, model.plan, tour)));
   return model;
 }
 

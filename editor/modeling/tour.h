@@ -4,6 +4,8 @@
 // walk runs at a steady speed.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -49,5 +51,11 @@ class TourPath {
 };
 
 double yawOf(const glm::dvec3& direction);  // 0 for -Z, +pi/2 for -X (turning left)
+
+// A model carries its tour in a WorldInfo info line, so that `photowalk tour` can
+// walk a building it only has as a .wrl: "photowalk-tour x y z x y z ...".
+std::string encodeTourInfo(const std::vector<glm::dvec3>& waypoints);
+// The waypoints of the first tour line among `info`, if any.
+std::optional<std::vector<glm::dvec3>> decodeTourInfo(const std::vector<std::string>& info);
 
 }  // namespace pw::modeling

@@ -72,5 +72,14 @@ TEST(Tour, BuildingTourStaysInsideAndMovesSmoothly) {
   EXPECT_LT(farthestZ, -10.0 - 8 + 1.5);    // and through to the far corridor's end
 }
 
+TEST(Tour, WaypointsSurviveTheModelsInfoLine) {
+  const std::vector<glm::dvec3> points{{0, 1.6, 2.5}, {0, 1.6, -8.25}, {-3.125, 1.6, -4}};
+  auto back = decodeTourInfo({"something else", encodeTourInfo(points)});
+  ASSERT_TRUE(back);
+  ASSERT_EQ(back->size(), 3u);
+  EXPECT_NEAR((*back)[2].x, -3.125, 1e-9);
+  EXPECT_FALSE(decodeTourInfo({"photowalk-tour 1 2"}));
+}
+
 }  // namespace
 }  // namespace pw::modeling
