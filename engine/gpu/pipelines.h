@@ -1,0 +1,49 @@
+// Descriptor set layouts, the one pipeline layout, samplers and the graphics
+// pipelines, created on first use per (colour format, sample count, variant) and
+// kept for the Renderer's life.
+#pragma once
+
+#include <map>
+#include <tuple>
+
+#include <vulkan/vulkan.h>
+
+#include "base/result.h"
+#include "engine/gpu/context.h"
+#include "engine/gpu/scene_packing.h"
+#include "engine/gpu/vk_owner.h"
+
+namespace pw::engine::gpu {
+
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+class PipelineLibrary {
+ public:
+  static Result<std::unique_ptr<PipelineLibrary>> create(const Context& context);
+
+  VkDescriptorSetLayout frameSetLayout() const { return frameSetLayout_.get(); }
+  VkDescriptorSetLayout sceneSetLayout() const { return sceneSetLayout_.get(); }
+  VkDescriptorSetLayout textureSetLayout() const { return textureSetLayout_.get(); }
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkSampler sampler(TextureWrap s, TextureWrap t) const {
+    return samplers_[(s == TextureWrap::kClamp ? 1 : 0) + (t == TextureWrap::kClamp ? 2 : 0)].get();
+  }
+
+  // The pipeline for drawing `variant` into a colour target of `format` with `samples`
+  // and a kDepthFormat depth target, dynamic rendering.
+  Result<VkPipeline> pipeline(VkFormat format, VkSampleCountFlagBits samples, PipelineVariant variant);
+
+ private:
+  explicit PipelineLibrary(const Context& context) : context_(context) {}
+  const Context& context_;
+  OwnedDescriptorSetLayout frameSetLayout_;
+  OwnedDescriptorSetLayout sceneSetLayout_;
+  OwnedDescriptorSetLayout textureSetLayout_;
+  OwnedPipelineLayout layout_;
+  OwnedShaderModule vertexShader_;
+  OwnedShaderModule fragmentShader_;
+  std::array<OwnedSampler, 4> samplers_;
+  std::map<std::tuple<VkFormat, VkSampleCountFlagBits, int>, OwnedPipeline> pipelines_;
+};
+
+}  // namespace pw::engine::gpu

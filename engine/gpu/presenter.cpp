@@ -1,0 +1,390 @@
+#include "engine/gpu/presenter.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "engine/gpu/renderer_impl.h"
+#include "engine/gpu/vk_check.h"
+
+namespace pw::engine {
+namespace {
+
+struct SwapchainImage {
+  VkImage image = VK_NULL_HANDLE;  // owned by the swapchain
+  gpu::OwnedImageView view;
+  gpu::OwnedFramebuffer framebuffer;   // for the overlay render pass
+  gpu::OwnedSemaphore renderFinished;  // per image: present waits on it (one per frame would be reused too early)
+};
+
+bool isSrgb(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_A8B8G8R8_SRGB_PACK32; }
+
+}  // namespace
+
+// Member order is teardown order, reversed: the swapchain's images before the
+// swapchain, everything before the borrowed renderer.
+struct Presenter::Impl {
+  Renderer::Impl& renderer;
+  gpu::Context& context;
+  VkSurfaceKHR surface = VK_NULL_HANDLE;  // borrowed
+  PresenterOptions options;
+  VkSurfaceFormatKHR surfaceFormat{};
+  VkPresentModeKHR presentMode = VK_PRESENT_MODE_FIFO_KHR;
+  gpu::OwnedRenderPass overlayPass;
+  gpu::OwnedDescriptorPool framePool;
+  std::vector<gpu::FrameSlot> frames;
+  std::vector<gpu::OwnedSemaphore> imageAvailable;  // per frame slot
+  gpu::OwnedSwapchain swapchain;
+  std::vector<SwapchainImage> images;
+  std::optional<gpu::GpuImage> msaaColor;
+  std::optional<gpu::GpuImage> depth;
+  VkExtent2D extent{0, 0};
+  uint32_t minImageCount = 0;
+  int requestedWidth = 0;
+  int requestedHeight = 0;
+  bool needsRecreate = true;
+  uint32_t frameIndex = 0;
+  uint64_t presented = 0;
+  gpu::DrawScratch scratch;
+  FrameStats stats;
+
+  Impl(Renderer::Impl& r) : renderer(r), context(*r.context) {}
+  ~Impl() {
+    // Frames and presents may still be queued; nothing else orders their end before
+    // the objects below go (presentation has no fence). Teardown only.
+    if (context.device()) vkQueueWaitIdle(context.queue());
+  }
+
+  Status createOverlayPass();
+  Status recreateSwapchain();
+};
+
+Status Presenter::Impl::createOverlayPass() {
+  VkAttachmentDescription attachment{};
+  attachment.format = surfaceFormat.format;
+  attachment.samples = VK_SAMPLE_COUNT_1_BIT;
+  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // keep the resolved scene
+  attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachment.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  attachment.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+  const VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &reference;
+  // The scene pass's resolve wrote the image at the colour-output stage; the overlay
+  // reads (loads, blends) and writes it at the same stage.
+  VkSubpassDependency dependencies[2]{};
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;  // present waits on a semaphore
+  dependencies[1].dstAccessMask = 0;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 1;
+  info.pAttachments = &attachment;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 2;
+  info.pDependencies = dependencies;
+  VkRenderPass pass = VK_NULL_HANDLE;
+  PW_VK_CHECK(vkCreateRenderPass(context.device(), &info, nullptr, &pass));
+  overlayPass = gpu::OwnedRenderPass(context.device(), pass);
+  return {};
+}
+
+Status Presenter::Impl::recreateSwapchain() {
+  const VkDevice device = context.device();
+  if (requestedWidth <= 0 || requestedHeight <= 0) return {};  // minimised: keep skipping
+  VkSurfaceCapabilitiesKHR caps;
+  PW_VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context.physicalDevice(), surface, &caps));
+  VkExtent2D size = caps.currentExtent;
+  if (size.width == UINT32_MAX) {  // the surface takes the swapchain's size
+    size.width = std::clamp(uint32_t(requestedWidth), caps.minImageExtent.width, caps.maxImageExtent.width);
+    size.height = std::clamp(uint32_t(requestedHeight), caps.minImageExtent.height, caps.maxImageExtent.height);
+  }
+  if (size.width == 0 || size.height == 0) return {};
+  PW_TRY(checkFrameSize(context, int(size.width), int(size.height), renderer.samples));
+
+  // Swapchain images may still be read by queued presents, and presentation has no
+  // fence to wait for (before VK_EXT_swapchain_maintenance1): recreation, which only a
+  // resize causes, waits for the queue.
+  PW_VK_CHECK(vkQueueWaitIdle(context.queue()));
+  for (gpu::FrameSlot& slot : frames) slot.inFlight.clear();
+
+  uint32_t count = std::max(caps.minImageCount + 1, 2u);
+  if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
+  VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+  info.surface = surface;
+  info.minImageCount = count;
+  info.imageFormat = surfaceFormat.format;
+  info.imageColorSpace = surfaceFormat.colorSpace;
+  info.imageExtent = size;
+  info.imageArrayLayers = 1;
+  info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.preTransform = caps.currentTransform;
+  info.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
+                            ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+                            : static_cast<VkCompositeAlphaFlagBitsKHR>(caps.supportedCompositeAlpha &
+                                                                       -caps.supportedCompositeAlpha);
+  info.presentMode = presentMode;
+  info.clipped = VK_TRUE;
+  info.oldSwapchain = swapchain.get();
+  VkSwapchainKHR handle = VK_NULL_HANDLE;
+  PW_VK_CHECK(vkCreateSwapchainKHR(device, &info, nullptr, &handle));
+  images.clear();  // views and framebuffers of the old images go before the old swapchain
+  swapchain = gpu::OwnedSwapchain(device, handle);
+  extent = size;
+  minImageCount = count;
+
+  uint32_t imageCount = 0;
+  PW_VK_CHECK(vkGetSwapchainImagesKHR(device, handle, &imageCount, nullptr));
+  std::vector<VkImage> swapImages(imageCount);
+  PW_VK_CHECK(vkGetSwapchainImagesKHR(device, handle, &imageCount, swapImages.data()));
+  for (VkImage image : swapImages) {
+    SwapchainImage entry;
+    entry.image = image;
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = image;
+    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = surfaceFormat.format;
+    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    PW_VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
+    entry.view = gpu::OwnedImageView(device, view);
+    VkFramebufferCreateInfo fbInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    fbInfo.renderPass = overlayPass.get();
+    fbInfo.attachmentCount = 1;
+    fbInfo.pAttachments = &view;
+    fbInfo.width = size.width;
+    fbInfo.height = size.height;
+    fbInfo.layers = 1;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    PW_VK_CHECK(vkCreateFramebuffer(device, &fbInfo, nullptr, &framebuffer));
+    entry.framebuffer = gpu::OwnedFramebuffer(device, framebuffer);
+    VkSemaphoreCreateInfo semInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    PW_VK_CHECK(vkCreateSemaphore(device, &semInfo, nullptr, &semaphore));
+    entry.renderFinished = gpu::OwnedSemaphore(device, semaphore);
+    images.push_back(std::move(entry));
+  }
+
+  msaaColor.reset();
+  depth.reset();
+  gpu::ImageSpec color;
+  color.format = surfaceFormat.format;
+  color.width = size.width;
+  color.height = size.height;
+  color.samples = renderer.samples;
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  color.transient = true;
+  if (renderer.samples != VK_SAMPLE_COUNT_1_BIT) {
+    auto image = gpu::createImage(context, color);
+    if (!image) return image.error();
+    msaaColor = std::move(*image);
+  }
+  gpu::ImageSpec depthSpec = color;
+  depthSpec.format = gpu::kDepthFormat;
+  depthSpec.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  depthSpec.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+  auto depthImage = gpu::createImage(context, depthSpec);
+  if (!depthImage) return depthImage.error();
+  depth = std::move(*depthImage);
+  needsRecreate = false;
+  return {};
+}
+
+Presenter::Presenter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Presenter::~Presenter() = default;
+
+Result<std::unique_ptr<Presenter>> Presenter::create(Renderer& renderer, VkSurfaceKHR surface, int width, int height,
+                                                     const PresenterOptions& options) {
+  auto impl = std::make_unique<Impl>(renderer.impl());
+  gpu::Context& ctx = impl->context;
+  if (!ctx.swapchainSupported()) {
+    return makeError("the renderer was created without VK_KHR_surface among its instance extensions, or " +
+                     std::string(ctx.properties().deviceName) + " cannot present; pass the window's extensions");
+  }
+  if (surface == VK_NULL_HANDLE) return makeError("no window surface was given to present to");
+  VkBool32 presentable = VK_FALSE;
+  PW_VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(ctx.physicalDevice(), ctx.queueFamily(), surface, &presentable));
+  if (!presentable) {
+    return makeError(std::string(ctx.properties().deviceName) + " cannot present to this window from its graphics queue");
+  }
+  if (options.framesInFlight < 1 || options.framesInFlight > 4) return makeError("frames in flight must be 1..4");
+  impl->surface = surface;
+  impl->options = options;
+  impl->requestedWidth = width;
+  impl->requestedHeight = height;
+
+  uint32_t formatCount = 0;
+  PW_VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(ctx.physicalDevice(), surface, &formatCount, nullptr));
+  std::vector<VkSurfaceFormatKHR> formats(formatCount);
+  PW_VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(ctx.physicalDevice(), surface, &formatCount, formats.data()));
+  if (formats.empty()) return makeError("the window surface offers no pixel formats");
+  impl->surfaceFormat = formats[0];
+  for (const VkSurfaceFormatKHR& f : formats) {
+    if (isSrgb(f.format) && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) {
+      impl->surfaceFormat = f;
+      break;
+    }
+  }
+  uint32_t modeCount = 0;
+  PW_VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(ctx.physicalDevice(), surface, &modeCount, nullptr));
+  std::vector<VkPresentModeKHR> modes(modeCount);
+  PW_VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(ctx.physicalDevice(), surface, &modeCount, modes.data()));
+  const auto has = [&](VkPresentModeKHR m) { return std::find(modes.begin(), modes.end(), m) != modes.end(); };
+  impl->presentMode = VK_PRESENT_MODE_FIFO_KHR;  // the one mode every surface has
+  if (options.mode == PresentMode::kLowLatency) {
+    if (has(VK_PRESENT_MODE_MAILBOX_KHR)) {
+      impl->presentMode = VK_PRESENT_MODE_MAILBOX_KHR;
+    } else if (has(VK_PRESENT_MODE_IMMEDIATE_KHR)) {
+      impl->presentMode = VK_PRESENT_MODE_IMMEDIATE_KHR;
+    }
+  }
+
+  PW_TRY(impl->createOverlayPass());
+  auto pool = gpu::createFrameDescriptorPool(ctx, uint32_t(options.framesInFlight));
+  if (!pool) return pool.error();
+  impl->framePool = std::move(*pool);
+  for (int i = 0; i < options.framesInFlight; ++i) {
+    auto slot = gpu::createFrameSlot(ctx, *impl->renderer.pipelines, impl->framePool.get());
+    if (!slot) return slot.error();
+    impl->frames.push_back(std::move(*slot));
+    VkSemaphoreCreateInfo semInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    PW_VK_CHECK(vkCreateSemaphore(ctx.device(), &semInfo, nullptr, &semaphore));
+    impl->imageAvailable.emplace_back(ctx.device(), semaphore);
+  }
+  PW_TRY(impl->recreateSwapchain());
+  return std::unique_ptr<Presenter>(new Presenter(std::move(impl)));
+}
+
+void Presenter::resize(int width, int height) {
+  if (width == impl_->requestedWidth && height == impl_->requestedHeight) return;
+  impl_->requestedWidth = width;
+  impl_->requestedHeight = height;
+  impl_->needsRecreate = true;
+}
+
+Status Presenter::drawFrame(const Camera& camera, const FrameSettings& settings, const OverlayCallback& overlay) {
+  Impl& p = *impl_;
+  const VkDevice device = p.context.device();
+  PW_TRY(checkCamera(camera));
+  if (p.needsRecreate || !p.swapchain) {
+    PW_TRY(p.recreateSwapchain());
+    if (p.needsRecreate) return {};  // minimised: nothing to draw into
+  }
+  gpu::FrameSlot& slot = p.frames[p.frameIndex];
+  PW_TRY(slot.waitAndReset(device));
+
+  const VkSemaphore acquired = p.imageAvailable[p.frameIndex].get();
+  uint32_t imageIndex = 0;
+  const VkResult acquire = vkAcquireNextImageKHR(device, p.swapchain.get(), UINT64_MAX, acquired, VK_NULL_HANDLE, &imageIndex);
+  if (acquire == VK_ERROR_OUT_OF_DATE_KHR) {
+    p.needsRecreate = true;  // the semaphore was not signalled; skip this frame
+    return {};
+  }
+  if (acquire == VK_SUBOPTIMAL_KHR) p.needsRecreate = true;  // draw it anyway, recreate after
+  PW_VK_CHECK(acquire);
+  SwapchainImage& target = p.images[imageIndex];
+
+  const VkCommandBuffer cmd = slot.commands;
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  PW_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  gpu::SceneTargets targets;
+  if (p.msaaColor) {
+    targets.color = p.msaaColor->get();
+    targets.colorView = p.msaaColor->view.get();
+    targets.resolve = target.image;
+    targets.resolveView = target.view.get();
+  } else {
+    targets.color = target.image;
+    targets.colorView = target.view.get();
+  }
+  targets.depth = p.depth->get();
+  targets.depthView = p.depth->view.get();
+  targets.format = p.surfaceFormat.format;
+  targets.samples = p.renderer.samples;
+  targets.extent = p.extent;
+  targets.encodeSrgbInShader = !isSrgb(p.surfaceFormat.format);
+  const Status recorded = gpu::recordScenePass(cmd, *p.renderer.pipelines, *p.renderer.scene, slot, targets, camera,
+                                               settings, p.scratch, p.stats);
+
+  VkRenderPassBeginInfo passInfo{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  passInfo.renderPass = p.overlayPass.get();
+  passInfo.framebuffer = target.framebuffer.get();
+  passInfo.renderArea = {{0, 0}, p.extent};
+  vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+  if (overlay) overlay(cmd);
+  vkCmdEndRenderPass(cmd);
+  PW_VK_CHECK(vkEndCommandBuffer(cmd));
+  PW_TRY(recorded);
+
+  const VkFence fence = slot.fence.get();
+  PW_VK_CHECK(vkResetFences(device, 1, &fence));
+  VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+  wait.semaphore = acquired;
+  wait.stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+  VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+  signal.semaphore = target.renderFinished.get();
+  signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmdInfo.commandBuffer = cmd;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.waitSemaphoreInfoCount = 1;
+  submit.pWaitSemaphoreInfos = &wait;
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  submit.signalSemaphoreInfoCount = 1;
+  submit.pSignalSemaphoreInfos = &signal;
+  PW_VK_CHECK(vkQueueSubmit2(p.context.queue(), 1, &submit, fence));
+  slot.inFlight.push_back(p.renderer.scene);  // a setScene while this frame draws must not free it
+
+  const VkSemaphore finished = target.renderFinished.get();
+  const VkSwapchainKHR swapchain = p.swapchain.get();
+  VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+  present.waitSemaphoreCount = 1;
+  present.pWaitSemaphores = &finished;
+  present.swapchainCount = 1;
+  present.pSwapchains = &swapchain;
+  present.pImageIndices = &imageIndex;
+  const VkResult presented = vkQueuePresentKHR(p.context.queue(), &present);
+  p.frameIndex = (p.frameIndex + 1) % uint32_t(p.frames.size());
+  if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR) {
+    p.needsRecreate = true;
+  } else {
+    PW_VK_CHECK(presented);
+  }
+  ++p.presented;
+  return {};
+}
+
+Status Presenter::waitIdle() {
+  for (gpu::FrameSlot& slot : impl_->frames) {
+    const VkFence fence = slot.fence.get();
+    PW_VK_CHECK(vkWaitForFences(impl_->context.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+    slot.inFlight.clear();
+  }
+  return {};
+}
+
+VkRenderPass Presenter::overlayRenderPass() const { return impl_->overlayPass.get(); }
+uint32_t Presenter::imageCount() const { return static_cast<uint32_t>(impl_->images.size()); }
+uint32_t Presenter::minImageCount() const { return impl_->minImageCount; }
+VkFormat Presenter::format() const { return impl_->surfaceFormat.format; }
+VkExtent2D Presenter::extent() const { return impl_->extent; }
+uint64_t Presenter::framesPresented() const { return impl_->presented; }
+FrameStats Presenter::lastFrameStats() const { return impl_->stats; }
+
+}  // namespace pw::engine

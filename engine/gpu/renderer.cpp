@@ -1,0 +1,256 @@
+#include "engine/gpu/renderer.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include "engine/gpu/barriers.h"
+#include "engine/gpu/renderer_impl.h"
+#include "engine/gpu/vk_check.h"
+
+namespace pw::engine {
+namespace {
+
+constexpr uint64_t kMaxTargetBytes = uint64_t{2} << 30;  // 2 GiB of colour, depth and read-back
+
+bool validationWanted(RendererOptions::Validation v) {
+  if (v != RendererOptions::Validation::kDefault) return v == RendererOptions::Validation::kOn;
+  const char* env = std::getenv("PW_VALIDATION");
+  if (env && *env) return std::strcmp(env, "0") != 0;
+#ifdef NDEBUG
+  return false;
+#else
+  return true;
+#endif
+}
+
+std::string sampleCountList(VkSampleCountFlags counts) {
+  std::string list;
+  for (int s = 1; s <= 64; s *= 2) {
+    if (counts & s) list += (list.empty() ? "" : ", ") + std::to_string(s);
+  }
+  return list;
+}
+
+Result<OffscreenTargets> createOffscreenTargets(const gpu::Context& context, uint32_t width, uint32_t height,
+                                                VkSampleCountFlagBits samples) {
+  OffscreenTargets t;
+  t.width = width;
+  t.height = height;
+  const bool multisampled = samples != VK_SAMPLE_COUNT_1_BIT;
+  gpu::ImageSpec color;
+  color.format = VK_FORMAT_R8G8B8A8_SRGB;
+  color.width = width;
+  color.height = height;
+  color.samples = samples;
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (multisampled ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  color.transient = multisampled;
+  auto colorImage = gpu::createImage(context, color);
+  if (!colorImage) return colorImage.error();
+  t.color = std::move(*colorImage);
+  if (multisampled) {
+    gpu::ImageSpec resolve = color;
+    resolve.samples = VK_SAMPLE_COUNT_1_BIT;
+    resolve.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    resolve.transient = false;
+    auto resolveImage = gpu::createImage(context, resolve);
+    if (!resolveImage) return resolveImage.error();
+    t.resolve = std::move(*resolveImage);
+  }
+  gpu::ImageSpec depth = color;
+  depth.format = gpu::kDepthFormat;
+  depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+  depth.transient = true;
+  auto depthImage = gpu::createImage(context, depth);
+  if (!depthImage) return depthImage.error();
+  t.depth = std::move(*depthImage);
+  auto readback = gpu::createBuffer(context, VkDeviceSize{width} * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    gpu::MemoryUse::kReadback);
+  if (!readback) return readback.error();
+  t.readback = std::move(*readback);
+  return t;
+}
+
+}  // namespace
+
+Status checkFrameSize(const gpu::Context& context, int width, int height, VkSampleCountFlagBits samples) {
+  const int64_t maxSide = context.properties().limits.maxImageDimension2D;
+  if (width < 1 || height < 1 || width > maxSide || height > maxSide) {
+    return makeError("frame size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " is out of range: each side must be 1.." + std::to_string(maxSide) + " pixels on " +
+                     context.properties().deviceName);
+  }
+  // Colour and depth per sample (4 + 4 bytes), the resolved image and the read-back copy.
+  const uint64_t bytes = uint64_t(width) * uint64_t(height) * (uint64_t(samples) * 8 + 8);
+  if (bytes > kMaxTargetBytes) {
+    return makeError("frame size " + std::to_string(width) + "x" + std::to_string(height) + " with " +
+                     std::to_string(int(samples)) + "x MSAA needs " + std::to_string(bytes >> 20) +
+                     " MiB of render targets, more than the 2048 MiB allowed; use a smaller size or fewer MSAA samples");
+  }
+  return {};
+}
+
+Status checkCamera(const Camera& camera) {
+  const glm::vec4 q(camera.orientation.x, camera.orientation.y, camera.orientation.z, camera.orientation.w);
+  const bool finite = std::isfinite(camera.position.x) && std::isfinite(camera.position.y) &&
+                      std::isfinite(camera.position.z) && std::isfinite(q.x) && std::isfinite(q.y) &&
+                      std::isfinite(q.z) && std::isfinite(q.w) && std::isfinite(camera.fieldOfViewRad);
+  if (!finite || glm::length(q) < 1e-6f) return makeError("the camera's position or orientation is not a finite number");
+  if (!(camera.nearM > 0.0f) || !(camera.farM > camera.nearM) || !std::isfinite(camera.farM)) {
+    return makeError("the camera's clip distances must satisfy 0 < near < far");
+  }
+  if (camera.intrinsics && !(camera.intrinsics->focalXPx > 0 && camera.intrinsics->focalYPx > 0)) {
+    return makeError("the camera's focal lengths must be positive");
+  }
+  return {};
+}
+
+Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Renderer::~Renderer() {
+  // Offscreen frames are waited for as they are made; nothing can be in flight here
+  // unless a Presenter outlived us, which its contract forbids.
+}
+
+Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& options) {
+  auto impl = std::make_unique<Impl>();
+  gpu::ContextOptions contextOptions;
+  contextOptions.forceCpu = options.forceCpu;
+  contextOptions.validation = validationWanted(options.validation);
+  contextOptions.validationRequired = options.validation == RendererOptions::Validation::kOn;
+  contextOptions.instanceExtensions = options.instanceExtensions;
+  auto context = gpu::Context::create(contextOptions);
+  if (!context) return context.error();
+  impl->context = std::move(*context);
+  const gpu::Context& ctx = *impl->context;
+
+  const int samples = options.msaaSamples;
+  const VkSampleCountFlags supported =
+      ctx.properties().limits.framebufferColorSampleCounts & ctx.properties().limits.framebufferDepthSampleCounts;
+  if (samples < 1 || samples > 64 || (samples & (samples - 1)) != 0 || !(supported & samples)) {
+    return makeError("MSAA " + std::to_string(samples) + "x is not available on " + ctx.properties().deviceName +
+                     "; choose one of " + sampleCountList(supported));
+  }
+  impl->samples = static_cast<VkSampleCountFlagBits>(samples);
+
+  VkFormatProperties depthProps;
+  vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), gpu::kDepthFormat, &depthProps);
+  if (!(depthProps.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
+    return makeError(std::string(ctx.properties().deviceName) + " cannot render to 32-bit float depth; use PW_DEVICE=cpu");
+  }
+
+  auto pipelines = gpu::PipelineLibrary::create(ctx);
+  if (!pipelines) return pipelines.error();
+  impl->pipelines = std::move(*pipelines);
+  auto pool = gpu::createFrameDescriptorPool(ctx, 1);
+  if (!pool) return pool.error();
+  impl->framePool = std::move(*pool);
+  auto frame = gpu::createFrameSlot(ctx, *impl->pipelines, impl->framePool.get());
+  if (!frame) return frame.error();
+  impl->frame = std::move(*frame);
+  auto empty = gpu::GpuScene::upload(ctx, *impl->pipelines, Scene{});
+  if (!empty) return empty.error();
+  impl->scene = std::move(*empty);
+  return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
+}
+
+Status Renderer::setScene(const Scene& scene) {
+  auto uploaded = gpu::GpuScene::upload(*impl_->context, *impl_->pipelines, scene);
+  if (!uploaded) return uploaded.error();
+  impl_->scene = std::move(*uploaded);  // frames still drawing the old one keep it alive
+  return {};
+}
+
+Result<Image> Renderer::renderToImage(const Camera& camera, int width, int height, const FrameSettings& settings) {
+  Impl& s = *impl_;
+  const gpu::Context& ctx = *s.context;
+  PW_TRY(checkFrameSize(ctx, width, height, s.samples));
+  PW_TRY(checkCamera(camera));
+  if (!s.offscreen || s.offscreen->width != uint32_t(width) || s.offscreen->height != uint32_t(height)) {
+    PW_TRY(s.frame.waitAndReset(ctx.device()));  // the old targets may be in use
+    s.offscreen.reset();
+    auto targets = createOffscreenTargets(ctx, uint32_t(width), uint32_t(height), s.samples);
+    if (!targets) return targets.error();
+    s.offscreen = std::move(*targets);
+  }
+  OffscreenTargets& t = *s.offscreen;
+  gpu::FrameSlot& frame = s.frame;
+  PW_TRY(frame.waitAndReset(ctx.device()));
+
+  const VkCommandBuffer cmd = frame.commands;
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  PW_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  gpu::SceneTargets targets;
+  targets.color = t.color.get();
+  targets.colorView = t.color.view.get();
+  if (t.resolve) {
+    targets.resolve = t.resolve->get();
+    targets.resolveView = t.resolve->view.get();
+  }
+  targets.depth = t.depth.get();
+  targets.depthView = t.depth.view.get();
+  targets.format = t.color.spec.format;
+  targets.samples = s.samples;
+  targets.extent = {uint32_t(width), uint32_t(height)};
+  const Status recorded = gpu::recordScenePass(cmd, *s.pipelines, *s.scene, frame, targets, camera, settings, s.scratch, s.stats);
+
+  const VkImage result = t.resolve ? t.resolve->get() : t.color.get();
+  gpu::transitionImage(cmd, {result, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {uint32_t(width), uint32_t(height), 1};
+  vkCmdCopyImageToBuffer(cmd, result, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t.readback.get(), 1, &region);
+  VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+  toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.buffer = t.readback.get();
+  toHost.size = VK_WHOLE_SIZE;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.bufferMemoryBarrierCount = 1;
+  dependency.pBufferMemoryBarriers = &toHost;
+  vkCmdPipelineBarrier2(cmd, &dependency);
+  PW_VK_CHECK(vkEndCommandBuffer(cmd));
+  PW_TRY(recorded);
+
+  const VkFence fence = frame.fence.get();
+  PW_VK_CHECK(vkResetFences(ctx.device(), 1, &fence));
+  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmdInfo.commandBuffer = cmd;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  PW_VK_CHECK(vkQueueSubmit2(ctx.queue(), 1, &submit, fence));
+  frame.inFlight.push_back(s.scene);
+  PW_TRY(frame.waitAndReset(ctx.device()));
+  PW_TRY(gpu::invalidate(ctx, t.readback));
+
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgba.resize(size_t(width) * size_t(height) * 4);
+  std::memcpy(image.rgba.data(), t.readback.mapped, image.rgba.size());
+  return image;
+}
+
+size_t Renderer::validationMessageCount() const { return impl_->context->validationLog().count(); }
+std::vector<std::string> Renderer::validationMessages() const { return impl_->context->validationLog().messages(); }
+bool Renderer::validationEnabled() const { return impl_->context->validationEnabled(); }
+std::string Renderer::deviceName() const { return impl_->context->properties().deviceName; }
+bool Renderer::isCpuDevice() const { return impl_->context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+int Renderer::msaaSamples() const { return static_cast<int>(impl_->samples); }
+FrameStats Renderer::lastFrameStats() const { return impl_->stats; }
+std::vector<std::string> Renderer::notes() const { return impl_->context->notes(); }
+VkInstance Renderer::instance() const { return impl_->context->instance(); }
+VkPhysicalDevice Renderer::physicalDevice() const { return impl_->context->physicalDevice(); }
+VkDevice Renderer::device() const { return impl_->context->device(); }
+VkQueue Renderer::queue() const { return impl_->context->queue(); }
+uint32_t Renderer::queueFamily() const { return impl_->context->queueFamily(); }
+
+}  // namespace pw::engine

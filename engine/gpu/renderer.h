@@ -1,0 +1,97 @@
+// photowalk's Vulkan renderer: draws a Scene (engine/scene/scene.h) with the VRML97
+// lighting model, offscreen to an Image here, or to a window through Presenter
+// (presenter.h). Vulkan 1.3 with dynamic rendering; a discrete or integrated GPU when
+// there is one, else the CPU device (lavapipe), which PW_DEVICE=cpu or
+// RendererOptions::forceCpu select explicitly.
+//
+//   auto renderer = Renderer::create({});          // Result<std::unique_ptr<Renderer>>
+//   renderer.value()->setScene(scene);              // uploads meshes and textures once
+//   auto image = renderer.value()->renderToImage(cameraFromViewpoint(vp), 1280, 720, {});
+//
+// One thread at a time: a Renderer and its Presenter are used from one thread.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "base/result.h"
+#include "engine/scene/camera.h"
+#include "engine/scene/image.h"
+#include "engine/scene/scene.h"
+
+namespace pw::engine {
+
+struct RendererOptions {
+  bool forceCpu = false;  // lavapipe even when a GPU exists (as PW_DEVICE=cpu)
+  int msaaSamples = 4;    // 1, 2, 4, 8...; an error when the device does not have it
+  enum class Validation { kDefault, kOn, kOff };
+  // kDefault: on in Debug builds and whenever PW_VALIDATION=1 (a missing layer is then
+  // a note, not an error); kOn: on, and a missing layer is an error (tests).
+  Validation validation = Validation::kDefault;
+  // Instance extensions a window needs (the caller passes GLFW's list; pw_gpu never
+  // includes GLFW). With VK_KHR_surface among them the device enables VK_KHR_swapchain.
+  std::vector<std::string> instanceExtensions;
+};
+
+struct FrameSettings {
+  std::optional<bool> headlight;  // unset: the scene's NavigationInfo.headlight
+  std::optional<glm::vec3> backgroundColor;  // sRGB-encoded like scene colours; unset: the scene's
+};
+
+// What the last frame drew (for tests and the walkthrough's statistics).
+struct FrameStats {
+  uint32_t drawCalls = 0;
+  uint32_t culledShapes = 0;  // outside the view frustum
+};
+
+class Renderer {
+ public:
+  static Result<std::unique_ptr<Renderer>> create(const RendererOptions& options);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads the scene's meshes, textures and lights (blocking); later frames draw it.
+  // The Scene may be destroyed afterwards. On error the previous scene stays.
+  // Errors name the shape or texture at fault (a texture without pixels, bad indices).
+  Status setScene(const Scene& scene);
+
+  // Draws the current scene (an empty one before setScene) from `camera` into a
+  // width x height frame and reads it back: RGBA8, sRGB-encoded, opaque, rows top
+  // to bottom. Sizes must be 1..the device's maximum (16384 on lavapipe) and the
+  // targets must fit in 2 GiB; else an error says which limit was hit.
+  Result<Image> renderToImage(const Camera& camera, int width, int height, const FrameSettings& settings = {});
+
+  // Validation-layer messages of severity warning or error since creation. Tests
+  // turn validation on and assert the count is zero.
+  size_t validationMessageCount() const;
+  std::vector<std::string> validationMessages() const;
+  bool validationEnabled() const;
+
+  std::string deviceName() const;
+  bool isCpuDevice() const;
+  int msaaSamples() const;
+  FrameStats lastFrameStats() const;
+  std::vector<std::string> notes() const;  // non-fatal remarks, e.g. "validation layer not installed"
+
+  // For window code (surface creation, ImGui's Vulkan backend); borrowed handles.
+  VkInstance instance() const;
+  VkPhysicalDevice physicalDevice() const;
+  VkDevice device() const;
+  VkQueue queue() const;
+  uint32_t queueFamily() const;
+
+  struct Impl;  // engine/gpu/renderer_impl.h; Presenter shares it
+  Impl& impl() { return *impl_; }
+
+ private:
+  explicit Renderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pw::engine

@@ -1,0 +1,71 @@
+// Flattening a Scene into what the GPU draws: one vertex and one index buffer for the
+// whole scene (meshes shared by several shapes are stored once), one ShapeGpu per
+// drawn shape, the lights, and the draw lists. Pure CPU work, tested without Vulkan.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "base/result.h"
+#include "engine/scene/scene.h"
+#include "shaders/shader_interface.h"
+
+namespace pw::engine::gpu {
+
+// One interleaved vertex (binding 0; locations in shader_interface.h).
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 texCoord;  // VRML (s, t): t = 0 at the bottom; the vertex shader flips it
+  glm::vec4 color;     // linear RGBA (white when the mesh has no colours)
+};
+static_assert(sizeof(Vertex) == 48);
+
+// Pipelines differ only in topology and blending; culling and winding are dynamic state.
+struct PipelineVariant {
+  Topology topology = Topology::kTriangles;
+  bool blended = false;  // transparent: alpha blending, no depth writes, drawn back to front
+  int index() const { return static_cast<int>(topology) * 2 + (blended ? 1 : 0); }
+  static constexpr int kCount = 6;
+};
+
+struct DrawItem {
+  uint32_t shapeIndex = 0;  // into PackedScene::shapes and the push constant
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
+  int32_t vertexOffset = 0;
+  uint32_t textureSlot = 0;  // 0: none (a 1x1 white texture), else PackedScene::textures[slot - 1]
+  PipelineVariant variant;
+  bool cullBackFaces = true;      // solid TRUE
+  bool clockwiseFront = false;    // a mirroring transform (negative determinant) flips the winding
+  Bounds worldBounds;
+};
+
+struct PackedTexture {
+  const Texture* texture = nullptr;  // borrowed from the Scene for the duration of the upload
+  bool hasAlpha = false;              // some texel has alpha < 255
+};
+
+struct PackedScene {
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;
+  std::vector<ShapeGpu> shapes;
+  std::vector<LightGpu> lights;                // only the lights that are on
+  std::vector<PackedTexture> textures;         // distinct Texture objects, in slot order
+  std::vector<DrawItem> opaque;                // sorted by pipeline, texture, cull state
+  std::vector<DrawItem> transparent;           // sorted per frame, back to front
+  glm::vec3 backgroundLinear{0.0f};
+};
+
+// Errors name the shape (or texture) and what is wrong with it: indices out of range,
+// attribute arrays of the wrong length, a texture without pixels, non-finite numbers.
+// Shapes without a mesh or with nothing to draw are skipped.
+Result<PackedScene> packScene(const Scene& scene);
+
+// The inverse transpose of the upper 3x3, computed as the cofactor matrix so that
+// singular transforms (a zero scale) still give finite normals; the shader normalises.
+glm::mat3 normalMatrix(const glm::mat4& model);
+
+}  // namespace pw::engine::gpu

@@ -1,0 +1,32 @@
+// Scene vertices: local to world by the shape's transform, world to clip by the frame's
+// camera. Shared by the triangle, line and point pipelines.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shader_interface.h"
+
+layout(location = PW_LOCATION_POSITION) in vec3 inPosition;
+layout(location = PW_LOCATION_NORMAL) in vec3 inNormal;
+layout(location = PW_LOCATION_TEXCOORD) in vec2 inTexCoord;
+layout(location = PW_LOCATION_COLOR) in vec4 inColor;
+
+layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
+layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_SHAPES) readonly buffer ShapeBlock { ShapeGpu shapes[]; };
+layout(push_constant) uniform PushBlock { DrawPushConstants draw; };
+
+layout(location = 0) out vec3 outWorldPosition;
+layout(location = 1) out vec3 outWorldNormal;
+layout(location = 2) out vec2 outTexCoord;
+layout(location = 3) out vec4 outColor;
+
+void main() {
+  const vec4 world = shapes[draw.shapeIndex].model * vec4(inPosition, 1.0);
+  outWorldPosition = world.xyz;
+  outWorldNormal = mat3(shapes[draw.shapeIndex].normalMatrix) * inNormal;
+  // VRML texture coordinates have t = 0 at the bottom of the image (6.48); our images
+  // are stored top row first, so Vulkan's v = 0 is the top.
+  outTexCoord = vec2(inTexCoord.x, 1.0 - inTexCoord.y);
+  outColor = inColor;
+  gl_Position = frame.viewProjection * world;
+  // Points need a size (Vulkan 27.10: undefined otherwise); ignored for other topologies.
+  gl_PointSize = 1.0;
+}

@@ -1,0 +1,107 @@
+// The interface between the C++ renderer (engine/gpu) and the GLSL shaders: binding
+// numbers, push constants and the layouts of uniform and storage buffers. Both sides
+// include this one file; the C++ side checks sizes and offsets below, so a change on
+// one side that the other does not follow fails to compile instead of misrendering.
+//
+// Every struct is made of vec4/uvec4/mat4 only, so std140 (uniform) and std430
+// (storage) lay it out exactly as C++ does, with no hidden padding.
+//
+// Colours here are linear (the renderer decodes the scene's sRGB-encoded colours).
+#ifndef PW_SHADER_INTERFACE_H
+#define PW_SHADER_INTERFACE_H
+
+#ifdef __cplusplus
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace pw::engine::gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using mat4 = glm::mat4;
+using uint = uint32_t;
+#define PW_SHADER_CONST inline constexpr
+#else
+#define PW_SHADER_CONST const
+#endif
+
+// Descriptor sets: 0 per frame (camera, headlight), 1 per scene (lights, shapes),
+// 2 per texture. Macros, not constants, because GLSL layout() wants literals.
+#define PW_SET_FRAME 0
+#define PW_BINDING_FRAME_UNIFORMS 0
+#define PW_SET_SCENE 1
+#define PW_BINDING_LIGHTS 0
+#define PW_BINDING_SHAPES 1
+#define PW_SET_TEXTURE 2
+#define PW_BINDING_TEXTURE 0
+
+// Vertex input locations (one interleaved binding, see engine/gpu/scene_packing.h).
+#define PW_LOCATION_POSITION 0
+#define PW_LOCATION_NORMAL 1
+#define PW_LOCATION_TEXCOORD 2
+#define PW_LOCATION_COLOR 3
+
+// LightGpu.positionType.w
+PW_SHADER_CONST uint kLightDirectional = 0u;
+PW_SHADER_CONST uint kLightPoint = 1u;
+PW_SHADER_CONST uint kLightSpot = 2u;
+
+// MaterialGpu.flags.x bits.
+PW_SHADER_CONST uint kMaterialUnlit = 1u;          // no Material node: colour at full intensity
+PW_SHADER_CONST uint kMaterialTextured = 2u;       // sample set 2's texture
+PW_SHADER_CONST uint kMaterialTextureAlpha = 4u;   // the texture's alpha replaces 1 - transparency
+PW_SHADER_CONST uint kMaterialVertexColor = 8u;    // per-vertex colour replaces the diffuse colour
+PW_SHADER_CONST uint kMaterialTwoSided = 16u;      // solid FALSE: light the back face with -N
+
+// Set 0: one per frame in flight.
+struct FrameUniforms {
+  mat4 viewProjection;     // world to Vulkan clip
+  vec4 cameraPosition;     // xyz world metres
+  vec4 headlightDirection; // xyz: direction the light travels (the view direction); w: 1 on, 0 off
+  uvec4 counts;            // x: number of scene lights, y: 1 when the target is UNORM and the
+                           // shader must encode sRGB itself, z, w: unused
+};
+
+// Set 1, binding 0: the scene's lights in world space (VRML97 4.14.4, 6.17, 6.36, 6.45).
+struct LightGpu {
+  vec4 colorIntensity;      // rgb linear colour, a: intensity
+  vec4 positionType;        // xyz: location (point, spot); w: kLight* as a float
+  vec4 directionAmbient;    // xyz: unit direction the light travels (directional, spot); w: ambientIntensity
+  vec4 attenuationRadius;   // xyz: attenuation a0 a1 a2; w: radius in metres (point, spot)
+  vec4 spot;                // x: beamWidth, y: cutOffAngle (radians, beamWidth <= cutOffAngle)
+};
+
+// VRML97 Material (6.27) plus how the shape is shaded.
+struct MaterialGpu {
+  vec4 diffuseAmbient;      // rgb: diffuseColor (linear), a: ambientIntensity
+  vec4 emissiveAlpha;       // rgb: emissiveColor (linear; unlit: the colour), a: 1 - transparency
+  vec4 specularShininess;   // rgb: specularColor (linear), a: exponent = shininess * 128
+  uvec4 flags;              // x: kMaterial* bits
+};
+
+// Set 1, binding 1: one per shape, indexed by the push constant.
+struct ShapeGpu {
+  mat4 model;          // local to world
+  mat4 normalMatrix;   // inverse transpose of the model's upper 3x3 (in a mat4 for layout)
+  MaterialGpu material;
+};
+
+struct DrawPushConstants {
+  uint shapeIndex;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(FrameUniforms) == 112 && offsetof(FrameUniforms, cameraPosition) == 64 &&
+              offsetof(FrameUniforms, headlightDirection) == 80 && offsetof(FrameUniforms, counts) == 96);
+static_assert(sizeof(LightGpu) == 80 && offsetof(LightGpu, positionType) == 16 &&
+              offsetof(LightGpu, directionAmbient) == 32 && offsetof(LightGpu, attenuationRadius) == 48 &&
+              offsetof(LightGpu, spot) == 64);
+static_assert(sizeof(MaterialGpu) == 64 && offsetof(MaterialGpu, emissiveAlpha) == 16 &&
+              offsetof(MaterialGpu, specularShininess) == 32 && offsetof(MaterialGpu, flags) == 48);
+static_assert(sizeof(ShapeGpu) == 192 && offsetof(ShapeGpu, normalMatrix) == 64 && offsetof(ShapeGpu, material) == 128);
+static_assert(sizeof(DrawPushConstants) == 4);
+}  // namespace pw::engine::gpu
+#endif
+
+#endif  // PW_SHADER_INTERFACE_H
