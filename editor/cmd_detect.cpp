@@ -1,0 +1,174 @@
+// photowalk detect: the corridor's vanishing points and eight corners, found
+// automatically in one photo and written as a shot file (issue 7).
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "base/atomic_file.h"
+#include "editor/command.h"
+#include "editor/shot_file.h"
+#include "metrology/detect/detect.h"
+
+namespace pw::editor {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+using metrology::detect::CorridorDetection;
+
+constexpr const char* kUsage =
+    "usage: photowalk detect PHOTO -o SHOT.json [--focal-px F] [--principal-point U,V]\n"
+    "                        [--camera-height H] [--near-at-image-edge]\n\n"
+    "Finds the corridor in the photo: its vanishing points (the Manhattan frame), the\n"
+    "four receding floor and ceiling edges, the far wall's corners P1..P4 and the near\n"
+    "corners P5..P8, each refined to sub-pixel precision on the image's edges, and\n"
+    "writes a shot file ready for measure, build and the editor, with a \"detection\"\n"
+    "object giving each vanishing point's and each corner's confidence (0..1).\n\n"
+    "  -o, --output SHOT.json  the shot file to write (the image path in it is relative)\n"
+    "  --focal-px F            focal length in pixels; without it, it is estimated from a\n"
+    "                          second finite vanishing point, or a 28 mm-equivalent\n"
+    "                          default is assumed (with a warning)\n"
+    "  --principal-point U,V   in pixels (default: the image centre)\n"
+    "  --camera-height H       camera height above the floor, metres (measure needs it,\n"
+    "                          or a reference length added in the editor)\n"
+    "  --near-at-image-edge    put P5..P8 at the nearest depth where all four stay inside\n"
+    "                          the photo even when a band or frame marks a cross-section\n\n"
+    "Exit status: 0 written; 1 bad input (one line on stderr); 2 no corridor found in\n"
+    "the photo (nothing is written).\n";
+
+Result<glm::dvec2> parsePoint(const std::string& text, const char* option) {
+  const size_t comma = text.find(',');
+  if (comma == std::string::npos) return makeError(std::string(option) + " wants U,V in pixels, e.g. 399.5,299.5");
+  auto u = parseNumber(std::string_view(text).substr(0, comma), option);
+  auto v = parseNumber(std::string_view(text).substr(comma + 1), option);
+  if (!u || !v) return makeError(std::string(option) + " wants U,V in pixels, e.g. 399.5,299.5, not '" + text + "'");
+  return glm::dvec2(*u, *v);
+}
+
+json vanishingPointJson(const metrology::detect::VanishingPoint& vp) {
+  json j;
+  if (vp.isFinite()) j["px"] = {vp.pixel().x, vp.pixel().y};
+  j["homogeneous"] = {vp.point.x, vp.point.y, vp.point.z};
+  j["confidence"] = vp.confidence;
+  j["inliers"] = vp.inlierCount;
+  j["rms_angle_deg"] = vp.rmsAngleDeg;
+  return j;
+}
+
+json detectionJson(const CorridorDetection& d) {
+  json j;
+  j["method"] = "lsd+manhattan-ransac+angular-profile+subpixel-edges";
+  j["focal_source"] = metrology::detect::focalSourceName(d.focalSource);
+  j["near_depth"] = metrology::detect::nearDepthName(d.nearDepth);
+  j["segments"] = d.segmentCount;
+  j["vanishing_points"] = {{"corridor", vanishingPointJson(d.corridor)},
+                           {"horizontal", vanishingPointJson(d.horizontal)},
+                           {"vertical", vanishingPointJson(d.vertical)}};
+  json corners = json::object();
+  for (int k = 0; k < metrology::kCornerCount; ++k) {
+    corners[metrology::cornerName(k)] = {{"confidence", d.corners[k].confidence}, {"sigma_px", d.corners[k].sigmaPx}};
+  }
+  j["corners"] = corners;
+  j["warnings"] = d.warnings;
+  return j;
+}
+
+// The shot file through writeShotFile (the format's one writer), with the detection
+// object added, renamed into place only when complete.
+Status writeDetectedShot(const fs::path& path, const metrology::Shot& shot, const json& detection) {
+  return writeViaTempFile(path, [&](const fs::path& temp) -> Status {
+    PW_TRY(writeShotFile(temp, shot));
+    auto text = readFile(temp);
+    if (!text) return text.error();
+    json doc = json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    if (!doc.is_object()) return makeError(path.string() + ": internal: the shot writer produced no JSON object");
+    doc["detection"] = detection;
+    return writeFileAtomic(temp, doc.dump(1) + "\n");
+  });
+}
+
+int runDetect(Args& args) {
+  const std::optional<std::string> output = args.value("--output", "-o");
+  const std::optional<std::string> focal = args.value("--focal-px");
+  const std::optional<std::string> principal = args.value("--principal-point");
+  const std::optional<std::string> height = args.value("--camera-height");
+  metrology::detect::DetectOptions options;
+  options.nearAtImageEdge = args.flag("--near-at-image-edge");
+  const std::vector<std::string> positionals = args.positionals();
+  if (auto finished = args.finish(); !finished) return fail(finished.message());
+  if (positionals.size() != 1) return fail("detect takes one photo; see photowalk detect --help");
+  if (!output) return fail("detect needs -o SHOT.json, the shot file to write");
+  if (focal) {
+    auto f = parseNumber(*focal, "--focal-px");
+    if (!f) return fail(f.message());
+    if (*f <= 0) return fail("--focal-px must be positive");
+    options.focalPx = *f;
+  }
+  if (principal) {
+    auto p = parsePoint(*principal, "--principal-point");
+    if (!p) return fail(p.message());
+    options.principalPointPx = *p;
+  }
+  std::optional<double> cameraHeightM;
+  if (height) {
+    auto h = parseNumber(*height, "--camera-height");
+    if (!h) return fail(h.message());
+    if (*h <= 0) return fail("--camera-height must be positive (metres)");
+    cameraHeightM = *h;
+  }
+
+  const std::string& photoPath = positionals[0];
+  std::error_code ec;
+  if (!fs::is_regular_file(photoPath, ec)) return fail(photoPath + ": no such file");
+  cv::Mat photo;
+  try {
+    photo = cv::imread(photoPath, cv::IMREAD_COLOR);
+  } catch (const cv::Exception&) {
+    photo.release();
+  }
+  if (photo.empty()) return fail(photoPath + ": not a readable PNG/JPEG image");
+
+  auto detection = metrology::detect::detectCorridor(photo, options);
+  if (!detection) return fail(photoPath + ": " + detection.message());
+  for (const std::string& warning : detection->warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  if (!detection->found) {
+    std::fprintf(stderr, "no corridor found in %s: %s\n", photoPath.c_str(), detection->notFoundReason.c_str());
+    return kExitNotFound;
+  }
+
+  metrology::Shot shot;
+  shot.imagePath = photoPath;
+  shot.imageWidth = photo.cols;
+  shot.imageHeight = photo.rows;
+  shot.focalPx = detection->focalPx;
+  shot.principalPointPx = detection->principalPointPx;
+  shot.cameraHeightM = cameraHeightM;
+  for (int k = 0; k < metrology::kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
+  if (Status written = writeDetectedShot(*output, shot, detectionJson(*detection)); !written) {
+    return fail(written.message());
+  }
+  const glm::dvec2 vp = detection->corridor.pixel();
+  std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,
+              detection->corridor.confidence, detection->focalPx, metrology::detect::focalSourceName(detection->focalSource));
+  for (int k = 0; k < metrology::kCornerCount; ++k) {
+    const auto& c = detection->corners[k];
+    std::printf("  %s (%8.2f, %8.2f)  confidence %.2f\n", metrology::cornerName(k), c.px.x, c.px.y, c.confidence);
+  }
+  std::printf("wrote %s (P5..P8 at the %s)\n", output->c_str(),
+              detection->nearDepth == metrology::detect::NearDepth::kMarkedCrossSection ? "marked cross-section"
+                                                                                        : "nearest depth inside the photo");
+  if (!cameraHeightM) {
+    std::fprintf(stderr, "note: no --camera-height: add camera_height_m (or a reference) to %s before measure\n",
+                 output->c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+PW_COMMAND(detect, "detect", "find the corridor's vanishing points and corners in a photo; write a shot", kUsage,
+           runDetect);
+
+}  // namespace pw::editor

@@ -1,0 +1,188 @@
+#include "metrology/detect/boundaries.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "metrology/detect/geometry.h"
+
+namespace pw::metrology::detect {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kBins = 8192;              // 0.044 degree
+constexpr int kCoarseWindowBins = 64;    // 2.8 degrees each side: finds the step among textures
+constexpr int kFineWindowBins = 8;       // 0.35 degree each side: places it
+constexpr double kFineRangeDeg = 1.0;
+constexpr double kQuadrantMarginDeg = 3.0;
+constexpr double kEdgeThreshold = 6.0;   // grey levels per pixel across the ray
+constexpr double kMinContrast = 1.0;
+
+// atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49-style minimax polynomial),
+// several times cheaper than std::atan2 over a million pixels.
+inline double fastAtan2(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  if (ax == 0 && ay == 0) return 0;
+  const bool swap = ay > ax;
+  const double t = swap ? ax / ay : ay / ax;
+  const double t2 = t * t;
+  double a = t * (0.99997726 + t2 * (-0.33262347 + t2 * (0.19354346 + t2 * (-0.11643287 + t2 * (0.05265332 - t2 * 0.01172120)))));
+  if (swap) a = kPi / 2 - a;
+  if (x < 0) a = kPi - a;
+  return y < 0 ? -a : a;
+}
+
+int binOf(double angle) { return static_cast<int>(wrapAngle(angle) / (2 * kPi) * kBins) % kBins; }
+double angleOf(int bin) { return (bin + 0.5) * 2 * kPi / kBins; }
+
+// Per angle bin: summed B, G, R and gradient magnitude of the pixels, and their count.
+class AngularProfile {
+ public:
+  static constexpr int kChannels = 4;
+  using Features = std::array<double, kChannels>;
+
+  AngularProfile(const WorkingImage& image, glm::dvec2 vp) {
+    std::vector<Features> sum(kBins, Features{});
+    std::vector<double> count(kBins, 0.0);
+    const double minRadius2 = std::pow(0.02 * std::hypot(image.bgr.cols, image.bgr.rows), 2);
+    const double binsPerRadian = kBins / (2 * kPi);
+    for (int y = 0; y < image.bgr.rows; ++y) {
+      const cv::Vec3b* row = image.bgr.ptr<cv::Vec3b>(y);
+      const float* gx = image.gradX.ptr<float>(y);
+      const float* gy = image.gradY.ptr<float>(y);
+      const double dy = y - vp.y;
+      for (int x = 0; x < image.bgr.cols; ++x) {
+        const double dx = x - vp.x;
+        if (dx * dx + dy * dy < minRadius2) continue;
+        const int bin = static_cast<int>(wrapAngle(fastAtan2(dy, dx)) * binsPerRadian) % kBins;
+        Features& s = sum[bin];
+        s[0] += row[x][0], s[1] += row[x][1], s[2] += row[x][2];
+        s[3] += std::abs(gx[x]) + std::abs(gy[x]);
+        count[bin] += 1;
+      }
+    }
+    // Prefix sums over two turns make any circular window one subtraction.
+    prefixSum_.assign(2 * kBins + 1, Features{});
+    prefixCount_.assign(2 * kBins + 1, 0.0);
+    for (int i = 0; i < 2 * kBins; ++i) {
+      for (int c = 0; c < kChannels; ++c) prefixSum_[i + 1][c] = prefixSum_[i][c] + sum[i % kBins][c];
+      prefixCount_[i + 1] = prefixCount_[i] + count[i % kBins];
+    }
+    // Each channel's spread over all angles is its unit; a floor of a few grey
+    // levels keeps a flat channel from amplifying noise.
+    const double total = prefixCount_[kBins];
+    Features mean{};
+    for (int c = 0; c < kChannels; ++c) mean[c] = prefixSum_[kBins][c] / std::max(total, 1.0);
+    Features var{};
+    for (int b = 0; b < kBins; ++b) {
+      if (count[b] <= 0) continue;
+      for (int c = 0; c < kChannels; ++c) {
+        const double d = sum[b][c] / count[b] - mean[c];
+        var[c] += count[b] * d * d;
+      }
+    }
+    for (int c = 0; c < kChannels; ++c) spread_[c] = std::max(std::sqrt(var[c] / std::max(total, 1.0)), 4.0);
+  }
+
+  // Distance between the mean features of the `window` bins before and after the
+  // boundary at the start of `bin`, in units of each channel's spread. Colour only
+  // when `colourOnly`: an edge's own gradient band (Sobel spreads it over three
+  // pixels) would otherwise pull a narrow step towards the smoother side.
+  double step(int bin, int window, bool colourOnly = false) const {
+    const int b = bin + kBins;  // into the second turn, so b - window >= 0
+    const double nl = count(b - window, b), nr = count(b, b + window);
+    if (nl < 20 || nr < 20) return 0;
+    double d2 = 0;
+    for (int c = 0; c < (colourOnly ? 3 : kChannels); ++c) {
+      const double l = (prefixSum_[b][c] - prefixSum_[b - window][c]) / nl;
+      const double r = (prefixSum_[b + window][c] - prefixSum_[b][c]) / nr;
+      const double d = (l - r) / spread_[c];
+      d2 += d * d;
+    }
+    return std::sqrt(d2);
+  }
+
+ private:
+  double count(int from, int to) const { return prefixCount_[to] - prefixCount_[from]; }
+  std::vector<Features> prefixSum_;
+  std::vector<double> prefixCount_;
+  Features spread_{};
+};
+
+// Share of the ray's outer half where an edge runs along it.
+double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle) {
+  const glm::dvec2 dir(std::cos(angle), std::sin(angle));
+  const glm::dvec2 normal(-dir.y, dir.x);
+  const double end = distanceToBorder(image, vp, dir) - 2.0;
+  int samples = 0, covered = 0;
+  for (double r = 0.45 * end; r <= end; r += 1.0) {
+    // The strongest gradient within a pixel of the ray, across it.
+    double across = 0;
+    for (double k = -1; k <= 1; k += 1)
+      across = std::max(across, std::abs(glm::dot(image.gradient(vp + r * dir + k * normal), normal)));
+    covered += across > kEdgeThreshold;
+    ++samples;
+  }
+  return samples > 0 ? static_cast<double>(covered) / samples : 0.0;
+}
+
+}  // namespace
+
+const char* boundaryName(int boundary) {
+  static const char* const kNames[kBoundaryCount] = {"floor-left", "floor-right", "ceiling-left", "ceiling-right"};
+  return boundary >= 0 && boundary < kBoundaryCount ? kNames[boundary] : "?";
+}
+
+double distanceToBorder(const WorkingImage& image, glm::dvec2 origin, glm::dvec2 direction) {
+  const double w = image.bgr.cols - 1, h = image.bgr.rows - 1;
+  double t = std::numeric_limits<double>::infinity();
+  if (direction.x > 1e-12) t = std::min(t, (w - origin.x) / direction.x);
+  if (direction.x < -1e-12) t = std::min(t, -origin.x / direction.x);
+  if (direction.y > 1e-12) t = std::min(t, (h - origin.y) / direction.y);
+  if (direction.y < -1e-12) t = std::min(t, -origin.y / direction.y);
+  return std::isfinite(t) ? std::max(t, 0.0) : 0.0;
+}
+
+Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vp, double horizonAngle) {
+  if (!image.contains(vp, 1.0)) return makeError("the corridor's vanishing point lies outside the photo");
+  const AngularProfile profile(image, vp);
+
+  // Quadrants measured from the horizon: floor-right (0..90 degrees, v grows down),
+  // floor-left, ceiling-left, ceiling-right.
+  constexpr std::array<int, kBoundaryCount> kQuadrantOf = {1, 0, 2, 3};
+  RecedingBoundaries out;
+  for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
+    const double q0 = horizonAngle + kQuadrantOf[boundary] * kPi / 2;
+    const double margin = kQuadrantMarginDeg * kPi / 180;
+    const int first = binOf(q0 + margin);
+    const int span = static_cast<int>((kPi / 2 - 2 * margin) / (2 * kPi) * kBins);
+    double coarseStrength = -1;
+    int coarseBin = first;
+    for (int i = 0; i <= span; ++i) {
+      const int bin = (first + i) % kBins;
+      const double s = profile.step(bin, kCoarseWindowBins);
+      if (s > coarseStrength) coarseStrength = s, coarseBin = bin;
+    }
+    if (coarseStrength < kMinContrast) {
+      return makeError(std::string("no ") + boundaryName(boundary) + " boundary (floor, walls and ceiling look alike)");
+    }
+    // Place it: the sharpest step near the coarse one. Narrow windows are not
+    // misled by a texture line beside the boundary (a mortar joint one brick
+    // course below a ceiling), which only a gradient would prefer.
+    const int range = static_cast<int>(kFineRangeDeg / 360.0 * kBins);
+    double fineStrength = -1;
+    int fineBin = coarseBin;
+    for (int i = -range; i <= range; ++i) {
+      const int bin = (coarseBin + i + kBins) % kBins;
+      const double s = profile.step(bin, kFineWindowBins, /*colourOnly=*/true);
+      if (s > fineStrength) fineStrength = s, fineBin = bin;
+    }
+    out.angle[boundary] = wrapAngle(angleOf(fineBin) - 0.5 * 2 * kPi / kBins);  // the bin's start is the step
+    out.contrast[boundary] = coarseStrength;
+    out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
+  }
+  return out;
+}
+
+}  // namespace pw::metrology::detect

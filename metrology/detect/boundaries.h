@@ -1,0 +1,45 @@
+// The corridor's four receding boundaries (floor-wall and ceiling-wall edges): rays
+// from the corridor vanishing point.
+#pragma once
+
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "base/result.h"
+#include "metrology/detect/working_image.h"
+
+namespace pw::metrology::detect {
+
+enum Boundary : int { kFloorLeft = 0, kFloorRight, kCeilingLeft, kCeilingRight };
+inline constexpr int kBoundaryCount = 4;
+const char* boundaryName(int boundary);
+
+struct RecedingBoundaries {
+  // Angle of each ray from the vanishing point, radians, in the image frame (0 along
+  // +u, pi/2 along +v, i.e. downwards), at working resolution.
+  std::array<double, kBoundaryCount> angle{};
+  // How different the two sides look (colour and texture), in units of the photo's
+  // own variation across all angles: > ~1.5 is a clear boundary.
+  std::array<double, kBoundaryCount> contrast{};
+  // Share of the ray's outer half where an edge runs along it.
+  std::array<double, kBoundaryCount> edgeCoverage{};
+
+  glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }
+};
+
+// Outside the far wall, a corridor photo is four angular sectors around the vanishing
+// point (floor, two walls, ceiling), and every ray from the point stays in one plane.
+// So the mean colour and texture along each ray (the "angular profile", texture
+// averaging out along the ray) is piecewise constant with four steps; the strongest
+// step in each quadrant (measured from the horizon) is a boundary, and its angle is
+// then sharpened to the ray that best follows an image edge.
+// `vanishingPoint` is in working pixels; `horizonAngle` is the direction of the
+// horizon (towards the horizontal vanishing point) in radians, pointing right.
+Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vanishingPoint,
+                                                  double horizonAngle);
+
+// Distance from `origin` along the unit `direction` to the image border (working pixels).
+double distanceToBorder(const WorkingImage& image, glm::dvec2 origin, glm::dvec2 direction);
+
+}  // namespace pw::metrology::detect

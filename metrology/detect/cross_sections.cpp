@@ -1,0 +1,175 @@
+#include "metrology/detect/cross_sections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "metrology/detect/geometry.h"
+
+namespace pw::metrology::detect {
+namespace {
+
+constexpr double kEdgeThreshold = 6.0;  // grey levels per pixel across a side
+constexpr double kStepPx = 0.5;         // scan step in t
+constexpr double kMinSideCoverage = 0.3;
+constexpr double kMinFarWallScore = 1.2;
+constexpr double kMarkedMinSide = 0.6;
+constexpr double kMarkedMinMean = 0.75;
+
+// Whether an edge runs along `normal`'s perpendicular at p: the strongest gradient
+// across it within `reach` pixels.
+bool edgeAt(const WorkingImage& image, glm::dvec2 p, glm::dvec2 normal, double reach) {
+  for (double k = -reach; k <= reach; k += 1.0) {
+    if (std::abs(glm::dot(image.gradient(p + k * normal), normal)) > kEdgeThreshold) return true;
+  }
+  return false;
+}
+
+double sideCoverage(const WorkingImage& image, glm::dvec2 a, glm::dvec2 b) {
+  const double length = glm::length(b - a);
+  if (length < 3) return 0;
+  const glm::dvec2 along = (b - a) / length;
+  const glm::dvec2 normal(-along.y, along.x);
+  // The ends meet other edges (the boundaries): keep to the side's middle 80%.
+  int samples = 0, covered = 0;
+  for (double s = 0.1 * length; s <= 0.9 * length; s += 1.0) {
+    covered += edgeAt(image, a + s * along, normal, 1.0);
+    ++samples;
+  }
+  return samples > 0 ? static_cast<double>(covered) / samples : 0.0;
+}
+
+// Edge indicator along one boundary ray, one sample per working pixel of radius,
+// as a prefix sum so any stretch's coverage is one subtraction.
+struct RayEdges {
+  std::vector<int> prefix{0};
+  double coverage(double from, double to) const {
+    const int n = static_cast<int>(prefix.size()) - 1;
+    const int a = std::clamp(static_cast<int>(from), 0, n), b = std::clamp(static_cast<int>(to), 0, n);
+    return b > a ? static_cast<double>(prefix[b] - prefix[a]) / (b - a) : 0.0;
+  }
+};
+
+RayEdges rayEdges(const WorkingImage& image, glm::dvec2 vp, glm::dvec2 dir) {
+  RayEdges edges;
+  const glm::dvec2 normal(-dir.y, dir.x);
+  const double end = distanceToBorder(image, vp, dir);
+  for (double r = 0; r < end; r += 1.0) edges.prefix.push_back(edges.prefix.back() + edgeAt(image, vp + r * dir, normal, 2.0));
+  return edges;
+}
+
+CrossSectionMatch evaluate(const WorkingImage& image, const Quad& q, double t) {
+  CrossSectionMatch m;
+  m.t = t;
+  m.corners = q;
+  for (int side = 0; side < 4; ++side) {
+    m.sideCoverage[side] = sideCoverage(image, q[kSideCorners[side][0]], q[kSideCorners[side][1]]);
+  }
+  return m;
+}
+
+double meanOf(const std::array<double, 4>& v) { return (v[0] + v[1] + v[2] + v[3]) / 4; }
+double minOf(const std::array<double, 4>& v) { return *std::min_element(v.begin(), v.end()); }
+
+}  // namespace
+
+CrossSectionFamily::CrossSectionFamily(glm::dvec2 vanishingPoint, glm::dvec3 horizontal, glm::dvec3 vertical,
+                                       const RecedingBoundaries& boundaries)
+    : vp_(vanishingPoint), horizontal_(horizontal), vertical_(vertical) {
+  for (int b = 0; b < kBoundaryCount; ++b) rayDirection_[b] = boundaries.direction(b);
+}
+
+std::optional<Quad> CrossSectionFamily::at(double t) const {
+  const glm::dvec3 vp = homogeneous(vp_);
+  const auto onRay = [&](int boundary, glm::dvec3 line) -> std::optional<glm::dvec2> {
+    const glm::dvec2 dir = rayDirection_[boundary];
+    auto p = intersect(glm::cross(vp, homogeneous(vp_ + dir)), line);
+    if (!p || glm::dot(*p - vp_, dir) <= 0) return std::nullopt;
+    return p;
+  };
+  const glm::dvec2 bottomLeft = vp_ + t * rayDirection_[kFloorLeft];
+  auto bottomRight = onRay(kFloorRight, glm::cross(homogeneous(bottomLeft), horizontal_));
+  auto topLeft = onRay(kCeilingLeft, glm::cross(homogeneous(bottomLeft), vertical_));
+  if (!bottomRight || !topLeft) return std::nullopt;
+  auto topRightA = onRay(kCeilingRight, glm::cross(homogeneous(*topLeft), horizontal_));
+  auto topRightB = onRay(kCeilingRight, glm::cross(homogeneous(*bottomRight), vertical_));
+  if (!topRightA || !topRightB) return std::nullopt;
+  return Quad{*topLeft, 0.5 * (*topRightA + *topRightB), bottomLeft, *bottomRight};
+}
+
+double CrossSectionFamily::largestInside(cv::Size size, double marginPx) const {
+  // Corners move monotonically outwards with t: bisect on "all inside".
+  const auto inside = [&](double t) {
+    auto q = at(t);
+    if (!q) return false;
+    for (const glm::dvec2& p : *q)
+      if (p.x < marginPx || p.y < marginPx || p.x > size.width - 1 - marginPx || p.y > size.height - 1 - marginPx) return false;
+    return true;
+  };
+  double lo = 0, hi = std::hypot(size.width, size.height);
+  if (!inside(1.0)) return 0;
+  lo = 1.0;
+  for (int i = 0; i < 50; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (inside(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family) {
+  const double tMax = family.largestInside(image.bgr.size(), 2.0);
+  if (tMax < 4) return makeError("the corridor's boundaries leave the photo at once");
+  std::array<RayEdges, kBoundaryCount> rays;
+  const glm::dvec2 vp = family.vanishingPoint();
+  std::optional<Quad> outer = family.at(tMax);
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    rays[b] = rayEdges(image, vp, glm::normalize((*outer)[std::array{2, 3, 0, 1}[b]] - vp));
+  }
+  constexpr std::array<int, kBoundaryCount> kCornerOfBoundary = {2, 3, 0, 1};
+
+  CrossSectionMatch best;
+  best.score = -1;
+  for (double t = 3.0; t <= tMax; t += kStepPx) {
+    auto q = family.at(t);
+    if (!q) continue;
+    CrossSectionMatch m = evaluate(image, *q, t);
+    if (minOf(m.sideCoverage) < kMinSideCoverage) continue;
+    double outside = 0, inside = 0;
+    for (int b = 0; b < kBoundaryCount; ++b) {
+      const double r = glm::length((*q)[kCornerOfBoundary[b]] - vp);
+      outside += rays[b].coverage(r + 2, r + 2 + std::max(10.0, 0.5 * r));
+      inside += rays[b].coverage(0.5 * r, r - 2);
+    }
+    m.boundaryContrast = (outside - inside) / kBoundaryCount;
+    m.score = meanOf(m.sideCoverage) + m.boundaryContrast;
+    if (m.score > best.score) best = m;
+  }
+  if (best.score < kMinFarWallScore) {
+    return makeError("no far wall: no rectangle across the corridor where its boundaries begin");
+  }
+  return best;
+}
+
+std::optional<CrossSectionMatch> findMarkedCrossSection(const WorkingImage& image, const CrossSectionFamily& family,
+                                                        double farWallT) {
+  const double tMax = family.largestInside(image.bgr.size(), 2.0);
+  std::vector<CrossSectionMatch> scan;
+  for (double t = 1.2 * farWallT; t <= tMax; t += kStepPx) {
+    auto q = family.at(t);
+    if (!q) continue;
+    CrossSectionMatch m = evaluate(image, *q, t);
+    m.score = meanOf(m.sideCoverage);
+    scan.push_back(m);
+  }
+  // The first local maximum (within 3 px) that passes: the deepest marked section.
+  for (size_t i = 0; i < scan.size(); ++i) {
+    const CrossSectionMatch& m = scan[i];
+    if (minOf(m.sideCoverage) < kMarkedMinSide || m.score < kMarkedMinMean) continue;
+    bool isPeak = true;
+    for (size_t j = i > 6 ? i - 6 : 0; j < std::min(scan.size(), i + 7); ++j) isPeak &= scan[j].score <= m.score;
+    if (isPeak) return m;
+  }
+  return std::nullopt;
+}
+
+}  // namespace pw::metrology::detect

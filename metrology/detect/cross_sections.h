@@ -1,0 +1,69 @@
+// Frontal cross-sections of the corridor (the far wall, a band or frame across it):
+// rectangles in 3D whose corners lie on the four receding boundaries and whose
+// sides point at the horizontal and vertical vanishing points.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include <glm/glm.hpp>
+#include <opencv2/core/types.hpp>
+
+#include "base/result.h"
+#include "metrology/detect/boundaries.h"
+#include "metrology/detect/working_image.h"
+
+namespace pw::metrology::detect {
+
+// Corners in the shot's order: top-left, top-right, bottom-left, bottom-right (the
+// far wall's P1 P2 P3 P4; the near section's P7 P8 P5 P6).
+using Quad = std::array<glm::dvec2, 4>;
+enum QuadSide : int { kTopSide = 0, kBottomSide, kLeftSide, kRightSide };
+inline constexpr std::array<std::array<int, 2>, 4> kSideCorners{{{0, 1}, {2, 3}, {0, 2}, {1, 3}}};
+
+// The one-parameter family of cross-sections: parameter t is the distance (working
+// pixels) of the bottom-left corner from the vanishing point along the floor-left
+// ray. For a box corridor, moving the cross-section in depth moves each corner
+// along its boundary ray, and the image of one section maps to another by a planar
+// homology with vertex at the vanishing point (Hartley & Zisserman, A7.2), so the
+// section is fixed by t: bottom-right = floor-right ray ∩ (bottom-left, horizontal
+// point), top-left = ceiling-left ray ∩ (bottom-left, vertical point), top-right
+// from both top-left and bottom-right, averaged.
+class CrossSectionFamily {
+ public:
+  // All in working pixels; horizontal and vertical are homogeneous (may be at infinity).
+  CrossSectionFamily(glm::dvec2 vanishingPoint, glm::dvec3 horizontal, glm::dvec3 vertical,
+                     const RecedingBoundaries& boundaries);
+  std::optional<Quad> at(double t) const;
+  // The largest t whose four corners stay `marginPx` inside an image of `size`.
+  double largestInside(cv::Size size, double marginPx) const;
+  glm::dvec2 vanishingPoint() const { return vp_; }
+  glm::dvec3 horizontal() const { return horizontal_; }
+  glm::dvec3 vertical() const { return vertical_; }
+
+ private:
+  glm::dvec2 vp_;
+  glm::dvec3 horizontal_, vertical_;
+  std::array<glm::dvec2, 4> rayDirection_{};  // per boundary
+};
+
+struct CrossSectionMatch {
+  double t = 0;
+  Quad corners{};
+  std::array<double, 4> sideCoverage{};  // share of each side (top, bottom, left, right) on an image edge
+  double boundaryContrast = 0;           // edge share along the rays just outside minus just inside
+  double score = 0;
+};
+
+// The far wall: the section with edges on all four sides where the receding
+// boundaries start (they run outwards from its corners, not inwards). A band or
+// door frame nearer the camera has edges on its sides too, but the boundaries run
+// on inside it. The error says why none was found.
+Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family);
+
+// The nearest-to-the-far-wall section nearer the camera whose four sides all lie on
+// image edges (a band, a frame, a beam across the corridor), if any.
+std::optional<CrossSectionMatch> findMarkedCrossSection(const WorkingImage& image, const CrossSectionFamily& family,
+                                                        double farWallT);
+
+}  // namespace pw::metrology::detect

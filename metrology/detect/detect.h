@@ -1,0 +1,76 @@
+// Automatic corridor detection (issue 7): from one photo, the corridor's vanishing
+// points and its eight corners P1..P8 (../shared/METHOD.md names them), each with a
+// confidence, ready to be written as a shot file and adjusted in the editor.
+//
+// Pipeline (each step in its own file):
+//   line_segments     LSD segments on a working copy (long side <= 1280 px)
+//   vanishing_points  Manhattan frame by RANSAC on the Gaussian sphere, per-direction
+//                     least squares; focal length from two finite points, or given
+//   boundaries        the four receding boundaries from the angular profile around
+//                     the corridor vanishing point
+//   cross_sections    the far wall as the cross-section where the boundaries begin;
+//                     a marked cross-section (band, frame) nearer the camera
+//   edge_fit          every side and boundary refitted at full resolution to
+//                     sub-pixel precision; corners as intersections of fitted lines
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <opencv2/core/mat.hpp>
+
+#include "base/result.h"
+#include "metrology/detect/vanishing_points.h"
+
+namespace pw::metrology::detect {
+
+struct DetectOptions {
+  std::optional<double> focalPx;               // withheld: estimated, else a default with a warning
+  std::optional<glm::dvec2> principalPointPx;  // default: the image centre ((w-1)/2, (h-1)/2)
+  int workingMaxSidePx = 1280;                 // detection runs on a copy no larger than this
+  // P5..P8 at the nearest depth where all four stay inside the image, even when a
+  // marked cross-section (a band or frame across the corridor) is found.
+  bool nearAtImageEdge = false;
+};
+
+enum class FocalSource { kGiven, kVanishingPoints, kDefault };
+enum class NearDepth { kMarkedCrossSection, kImageEdge };
+const char* focalSourceName(FocalSource source);
+const char* nearDepthName(NearDepth depth);
+
+// Default focal length when none is given and the photo has no second finite
+// vanishing point: a 28 mm-equivalent lens (28/36 of the long side, rounded to 0.8),
+// typical of phone cameras.
+inline constexpr double kDefaultFocalOverLongSide = 0.8;
+
+struct CornerEstimate {
+  glm::dvec2 px{0, 0};
+  double confidence = 0;  // 0..1: edge coverage of the lines that meet there, less for a poor fit
+  double sigmaPx = 0;     // 1-sigma position uncertainty from the line fits
+};
+
+struct CorridorDetection {
+  bool found = false;
+  std::string notFoundReason;  // one line when !found: why this is not a corridor photo
+
+  double focalPx = 0;
+  FocalSource focalSource = FocalSource::kGiven;
+  glm::dvec2 principalPointPx{0, 0};
+  VanishingPoint corridor, horizontal, vertical;  // full-resolution pixels
+  std::array<CornerEstimate, 8> corners{};        // P1..P8
+  NearDepth nearDepth = NearDepth::kImageEdge;
+  std::vector<std::string> warnings;
+  int segmentCount = 0;
+};
+
+// Finds the corridor in `photoBgr` (CV_8UC3, any size). The error is for input a
+// person must fix (empty image, a focal length or principal point that makes no
+// sense); a photo that simply shows no corridor comes back with found == false and
+// the reason. Never makes corners up: every corner lies on fitted image edges or, for
+// P5..P8 without a marked cross-section, on fitted boundaries at the stated depth.
+Result<CorridorDetection> detectCorridor(const cv::Mat& photoBgr, const DetectOptions& options);
+
+}  // namespace pw::metrology::detect

@@ -1,0 +1,157 @@
+#include "metrology/detect/edge_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "metrology/detect/geometry.h"
+
+namespace pw::metrology::detect {
+namespace {
+
+constexpr double kMinStep = 8.0;  // grey levels between the two sides' mean colours
+
+glm::dvec3 sampleColour(const cv::Mat& photo, glm::dvec2 p) {
+  const double x = std::clamp(p.x, 0.0, photo.cols - 1.001), y = std::clamp(p.y, 0.0, photo.rows - 1.001);
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const int x1 = std::min(x0 + 1, photo.cols - 1), y1 = std::min(y0 + 1, photo.rows - 1);
+  const double fx = x - x0, fy = y - y0;
+  const cv::Vec3b& a = photo.at<cv::Vec3b>(y0, x0);
+  const cv::Vec3b& b = photo.at<cv::Vec3b>(y0, x1);
+  const cv::Vec3b& c = photo.at<cv::Vec3b>(y1, x0);
+  const cv::Vec3b& d = photo.at<cv::Vec3b>(y1, x1);
+  glm::dvec3 out;
+  for (int k = 0; k < 3; ++k) out[k] = (a[k] * (1 - fx) + b[k] * fx) * (1 - fy) + (c[k] * (1 - fx) + d[k] * fx) * fy;
+  return out;
+}
+
+struct EdgePoint {
+  glm::dvec2 p;
+  double weight;
+};
+
+// The edge across one normal: Haar step response at every half-pixel between
+// samples one pixel apart, its maximum refined by a parabola.
+std::optional<EdgePoint> findEdge(const cv::Mat& photo, glm::dvec2 centre, glm::dvec2 normal, double searchPx, int half) {
+  const int reach = static_cast<int>(std::ceil(searchPx)) + half;
+  std::vector<glm::dvec3> colour(2 * reach + 1);
+  for (int k = -reach; k <= reach; ++k) colour[k + reach] = sampleColour(photo, centre + static_cast<double>(k) * normal);
+  // Response between sample j and j+1 (offset j + 0.5 from the centre).
+  const int first = -reach + half - 1, last = reach - half;
+  std::vector<double> response;
+  for (int j = first; j < last; ++j) {
+    glm::dvec3 before(0), after(0);
+    for (int i = 0; i < half; ++i) before += colour[j - i + reach], after += colour[j + 1 + i + reach];
+    response.push_back(glm::length(after - before) / half);
+  }
+  int best = -1;
+  for (int i = 1; i + 1 < static_cast<int>(response.size()); ++i) {
+    const double offset = first + i + 0.5;
+    if (std::abs(offset) > searchPx) continue;
+    if (best < 0 || response[i] > response[best]) best = i;
+  }
+  if (best < 0 || response[best] < kMinStep) return std::nullopt;
+  const double l = response[best - 1], c = response[best], r = response[best + 1];
+  const double denom = l - 2 * c + r;
+  const double delta = denom < 0 ? std::clamp(0.5 * (l - r) / denom, -0.5, 0.5) : 0.0;
+  const double offset = first + best + 0.5 + delta;
+  return EdgePoint{centre + offset * normal, c};
+}
+
+// The line through `q` minimising sum w (l·x)^2 / (a^2 + b^2): lines through q are
+// l = E c with E an orthonormal basis of q's orthogonal complement, which turns the
+// problem into the smallest generalised eigenvalue of (E^T X E, E^T diag(1,1,0) E).
+std::optional<glm::dvec3> fitLineThrough(glm::dvec3 q, const std::vector<EdgePoint>& points,
+                                         const std::vector<bool>& use, glm::dvec2 origin) {
+  // Work relative to `origin` so the homogeneous coordinates stay well scaled.
+  q = glm::dvec3(q.x - origin.x * q.z, q.y - origin.y * q.z, q.z);
+  q = glm::normalize(q);
+  glm::dvec3 helper = std::abs(q.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(q, helper));
+  const glm::dvec3 e2 = glm::cross(q, e1);
+  double a11 = 0, a12 = 0, a22 = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!use[i]) continue;
+    const glm::dvec3 x(points[i].p.x - origin.x, points[i].p.y - origin.y, 1.0);
+    const double p1 = glm::dot(e1, x), p2 = glm::dot(e2, x), w = points[i].weight;
+    a11 += w * p1 * p1, a12 += w * p1 * p2, a22 += w * p2 * p2;
+  }
+  const double b11 = e1.x * e1.x + e1.y * e1.y, b12 = e1.x * e2.x + e1.y * e2.y, b22 = e2.x * e2.x + e2.y * e2.y;
+  // det(A - λB) = 0: (b11 b22 - b12^2) λ^2 - (a11 b22 + a22 b11 - 2 a12 b12) λ + (a11 a22 - a12^2) = 0.
+  const double qa = b11 * b22 - b12 * b12, qb = -(a11 * b22 + a22 * b11 - 2 * a12 * b12), qc = a11 * a22 - a12 * a12;
+  double lambda;
+  if (std::abs(qa) < 1e-15) {
+    if (std::abs(qb) < 1e-15) return std::nullopt;
+    lambda = -qc / qb;
+  } else {
+    const double disc = std::max(0.0, qb * qb - 4 * qa * qc);
+    lambda = (-qb - std::sqrt(disc)) / (2 * qa);
+  }
+  // (A - λB) c = 0: c is perpendicular to the better-conditioned row.
+  const double r1x = a11 - lambda * b11, r1y = a12 - lambda * b12;
+  const double r2x = a12 - lambda * b12, r2y = a22 - lambda * b22;
+  glm::dvec2 c = (std::hypot(r1x, r1y) > std::hypot(r2x, r2y)) ? glm::dvec2(-r1y, r1x) : glm::dvec2(-r2y, r2x);
+  if (glm::length(c) == 0) return std::nullopt;
+  glm::dvec3 l = c.x * e1 + c.y * e2;
+  // Back to image coordinates: l·(x - origin) = l·x - l.xy·origin.
+  l.z -= l.x * origin.x + l.y * origin.y;
+  const glm::dvec3 n = normalizedLine(l);
+  if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return std::nullopt;
+  return n;
+}
+
+}  // namespace
+
+double EdgeLine::positionSigmaPx() const { return std::max(0.05, rmsPx / std::sqrt(std::max(1, inliers))); }
+
+std::optional<EdgeLine> fitEdgeLine(const cv::Mat& photo, const EdgeSearch& search) {
+  const double length = glm::length(search.to - search.from);
+  if (length < 2 || photo.empty()) return std::nullopt;
+  const glm::dvec2 along = (search.to - search.from) / length;
+  const glm::dvec2 normal(-along.y, along.x);
+  const int half = std::max(1, static_cast<int>(std::lround(search.stepHalfWidthPx)));
+  const int samples = std::clamp(static_cast<int>(length), 2, search.maxSamples);
+
+  std::vector<EdgePoint> points;
+  for (int i = 0; i < samples; ++i) {
+    const glm::dvec2 centre = search.from + (length * (i + 0.5) / samples) * along;
+    if (centre.x < 0 || centre.y < 0 || centre.x > photo.cols - 1 || centre.y > photo.rows - 1) continue;
+    const double window = search.searchPx + search.searchGrowPx * (i + 0.5) / samples;
+    if (auto e = findEdge(photo, centre, normal, window, half)) points.push_back(*e);
+  }
+  if (points.size() < 5) return std::nullopt;
+
+  const glm::dvec2 origin = 0.5 * (search.from + search.to);
+  std::vector<bool> use(points.size(), true);
+  std::optional<glm::dvec3> line;
+  double rms = 0;
+  int inliers = 0;
+  for (int round = 0; round < 4; ++round) {
+    line = fitLineThrough(search.through, points, use, origin);
+    if (!line) return std::nullopt;
+    std::vector<double> residuals;
+    for (size_t i = 0; i < points.size(); ++i) residuals.push_back(std::abs(glm::dot(*line, homogeneous(points[i].p))));
+    std::vector<double> sorted = residuals;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double sigma = 1.4826 * sorted[sorted.size() / 2];
+    const double limit = std::max(2.5 * sigma, 0.35);
+    double sum2 = 0;
+    inliers = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      use[i] = residuals[i] <= limit;
+      if (use[i]) sum2 += residuals[i] * residuals[i], ++inliers;
+    }
+    if (inliers < 5) return std::nullopt;
+    rms = std::sqrt(sum2 / inliers);
+  }
+  line = fitLineThrough(search.through, points, use, origin);
+  if (!line) return std::nullopt;
+  EdgeLine out;
+  out.line = *line;
+  out.rmsPx = rms;
+  out.inliers = inliers;
+  out.coverage = static_cast<double>(inliers) / samples;
+  return out;
+}
+
+}  // namespace pw::metrology::detect

@@ -1,0 +1,38 @@
+// Sub-pixel fitting of straight image edges at full resolution.
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+#include <opencv2/core/mat.hpp>
+
+namespace pw::metrology::detect {
+
+struct EdgeLine {
+  glm::dvec3 line{0, 0, 0};  // normalised homogeneous line: l·(u, v, 1) is a signed distance in pixels
+  double rmsPx = 0;          // RMS distance of the inlier edge points from the line
+  double coverage = 0;       // share of the samples that found an edge and agreed with the line
+  int inliers = 0;
+  // 1-sigma uncertainty of the line's position, in pixels, at the middle of the
+  // fitted stretch: rms / sqrt(inliers) (at least 0.05 px).
+  double positionSigmaPx() const;
+};
+
+struct EdgeSearch {
+  glm::dvec2 from, to;      // the stretch of the initial line to sample (full-resolution pixels)
+  glm::dvec3 through;       // homogeneous point every candidate line passes through (may be at infinity)
+  double searchPx = 4;      // how far either side of the initial line to look for the edge, at `from`
+  double searchGrowPx = 0;  // ... plus this much more at `to` (linearly): for rays whose angle is uncertain
+  double stepHalfWidthPx = 2;  // each side's width in the step response (a Haar-like step filter)
+  int maxSamples = 400;
+};
+
+// Finds the edge along each of up to maxSamples normals to the stretch from..to
+// (the position where the mean colour of the `stepHalfWidthPx` pixels on either
+// side differs most, placed to sub-pixel by a parabola through the response), then
+// fits the line through `through` that minimises the squared distances, with
+// outliers (texture edges, occlusions) dropped by a MAD rule. nullopt when fewer
+// than 5 samples found an edge. `photo` is CV_8UC3 at full resolution.
+std::optional<EdgeLine> fitEdgeLine(const cv::Mat& photo, const EdgeSearch& search);
+
+}  // namespace pw::metrology::detect

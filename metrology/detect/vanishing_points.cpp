@@ -1,0 +1,253 @@
+#include "metrology/detect/vanishing_points.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include <opencv2/core.hpp>
+
+#include "metrology/detect/geometry.h"
+
+namespace pw::metrology::detect {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInlierAngleDeg = 1.5;     // on the Gaussian sphere
+constexpr int kRansacIterations = 2000;
+constexpr size_t kRansacPoolSize = 400;     // the longest segments carry the hypothesis search
+constexpr size_t kMinSegments = 8;
+
+struct SphereSegment {
+  glm::dvec3 normal;  // unit normal of the interpretation plane through the camera centre
+  double weight;      // length in pixels
+};
+
+glm::dvec3 backProject(glm::dvec2 p, const PinholeCamera& camera) {
+  return {(p.x - camera.principalPointPx.x) / camera.focalPx, (p.y - camera.principalPointPx.y) / camera.focalPx, 1.0};
+}
+
+// The eigenvector of the smallest eigenvalue of a symmetric 3x3 matrix: the unit
+// direction d minimising sum w (n·d)^2, i.e. closest to lying in every plane.
+glm::dvec3 leastSquaresDirection(const std::vector<SphereSegment>& segs, const std::vector<int>& members) {
+  cv::Matx33d m = cv::Matx33d::zeros();
+  for (int i : members) {
+    const glm::dvec3& n = segs[i].normal;
+    const double w = segs[i].weight;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m(r, c) += w * n[r] * n[c];
+  }
+  cv::Matx31d values;
+  cv::Matx33d vectors;
+  cv::eigen(m, values, vectors);  // descending order
+  return glm::normalize(glm::dvec3(vectors(2, 0), vectors(2, 1), vectors(2, 2)));
+}
+
+// Labels every segment with the direction whose great circle it lies closest to,
+// or -1 when none is within the inlier angle.
+void assignLabels(const std::vector<SphereSegment>& segs, const std::array<glm::dvec3, 3>& dirs, std::vector<int>& labels) {
+  const double tol = std::sin(kInlierAngleDeg * kPi / 180.0);
+  labels.assign(segs.size(), -1);
+  for (size_t i = 0; i < segs.size(); ++i) {
+    double best = tol;
+    for (int k = 0; k < 3; ++k) {
+      const double e = std::abs(glm::dot(segs[i].normal, dirs[k]));
+      if (e < best) best = e, labels[i] = k;
+    }
+  }
+}
+
+// Refines a finite vanishing point in the image by Gauss-Newton on the distance of
+// each inlier segment's end points from the line joining its midpoint to the point
+// (the usual maximum-likelihood approximation, e.g. Tardif, ICCV 2009, eq. 2),
+// weighted by segment length.
+glm::dvec2 refineFinitePoint(glm::dvec2 v, const std::vector<LineSegment>& segments, const std::vector<int>& members) {
+  const auto residual = [&](glm::dvec2 p, const LineSegment& s) {
+    const glm::dvec2 m = 0.5 * (s.a + s.b);
+    const glm::dvec2 d = p - m;
+    const double n = glm::length(d);
+    if (n < 1e-9) return 0.0;
+    const glm::dvec2 e = s.a - m;
+    return (d.x * e.y - d.y * e.x) / n;
+  };
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    cv::Matx22d jtj = cv::Matx22d::zeros();
+    cv::Vec2d jtr(0, 0);
+    const double h = 1e-3;
+    for (int i : members) {
+      const LineSegment& s = segments[i];
+      const double w = s.lengthPx;
+      const double r = residual(v, s);
+      const double jx = (residual(v + glm::dvec2(h, 0), s) - r) / h;
+      const double jy = (residual(v + glm::dvec2(0, h), s) - r) / h;
+      jtj(0, 0) += w * jx * jx, jtj(0, 1) += w * jx * jy, jtj(1, 1) += w * jy * jy;
+      jtr(0) += w * jx * r, jtr(1) += w * jy * r;
+    }
+    jtj(1, 0) = jtj(0, 1);
+    if (cv::determinant(jtj) <= 1e-12) break;
+    const cv::Vec2d step = jtj.inv() * jtr;
+    v -= glm::dvec2(step(0), step(1));
+    if (std::hypot(step(0), step(1)) < 1e-4) break;
+  }
+  return v;
+}
+
+// RMS angle (degrees) between inlier segments and the lines from their midpoints
+// to the vanishing point.
+double rmsAngleDeg(glm::dvec3 point, const std::vector<LineSegment>& segments, const std::vector<int>& members) {
+  double sum = 0, weight = 0;
+  for (int i : members) {
+    const LineSegment& s = segments[i];
+    const glm::dvec2 m = 0.5 * (s.a + s.b);
+    const glm::dvec2 toPoint = directionTowards(point, m);
+    const glm::dvec2 along = (s.b - s.a) / s.lengthPx;
+    const double sine = std::abs(toPoint.x * along.y - toPoint.y * along.x);
+    const double angle = std::asin(std::min(1.0, sine));
+    sum += s.lengthPx * angle * angle;
+    weight += s.lengthPx;
+  }
+  return weight > 0 ? std::sqrt(sum / weight) * 180.0 / kPi : 0.0;
+}
+
+// Share of 8 angular sectors around the (finite) point holding inlier segments of
+// at least 2% of the image diagonal: a corridor's lines arrive from all around.
+double sectorCoverage(glm::dvec2 v, const std::vector<LineSegment>& segments, const std::vector<int>& members,
+                      double diagonal) {
+  std::array<double, 8> lengthPerSector{};
+  for (int i : members) {
+    const glm::dvec2 m = 0.5 * (segments[i].a + segments[i].b) - v;
+    const double angle = wrapAngle(std::atan2(m.y, m.x));
+    lengthPerSector[std::min(7, static_cast<int>(angle / (2 * kPi) * 8))] += segments[i].lengthPx;
+  }
+  int covered = 0;
+  for (double l : lengthPerSector) covered += l >= 0.02 * diagonal;
+  return covered / 8.0;
+}
+
+}  // namespace
+
+Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& segments, const PinholeCamera& camera,
+                                              cv::Size imageSize) {
+  if (segments.size() < kMinSegments) {
+    return makeError("only " + std::to_string(segments.size()) + " straight edges in the photo");
+  }
+  const double diagonal = std::hypot(imageSize.width, imageSize.height);
+  std::vector<SphereSegment> sphere;
+  sphere.reserve(segments.size());
+  for (const LineSegment& s : segments) {
+    glm::dvec3 n = glm::cross(backProject(s.a, camera), backProject(s.b, camera));
+    sphere.push_back({glm::normalize(n), s.lengthPx});
+  }
+
+  // Hypotheses come from the longest segments, drawn in proportion to length.
+  std::vector<int> pool(segments.size());
+  std::iota(pool.begin(), pool.end(), 0);
+  std::sort(pool.begin(), pool.end(), [&](int a, int b) { return segments[a].lengthPx > segments[b].lengthPx; });
+  pool.resize(std::min(pool.size(), kRansacPoolSize));
+  std::vector<double> poolWeights;
+  for (int i : pool) poolWeights.push_back(segments[i].lengthPx);
+  std::mt19937 rng(12345);  // fixed seed: the same photo always gives the same answer
+  std::discrete_distribution<int> draw(poolWeights.begin(), poolWeights.end());
+
+  const double tol = std::sin(kInlierAngleDeg * kPi / 180.0);
+  std::array<glm::dvec3, 3> best{};
+  double bestScore = -1;
+  for (int it = 0; it < kRansacIterations; ++it) {
+    const int a = pool[draw(rng)], b = pool[draw(rng)], c = pool[draw(rng)];
+    if (a == b || a == c || b == c) continue;
+    glm::dvec3 d1 = glm::cross(sphere[a].normal, sphere[b].normal);
+    if (glm::length(d1) < 1e-6) continue;
+    d1 = glm::normalize(d1);
+    glm::dvec3 d2 = glm::cross(d1, sphere[c].normal);
+    if (glm::length(d2) < 1e-6) continue;
+    d2 = glm::normalize(d2);
+    const glm::dvec3 d3 = glm::cross(d1, d2);
+    double score = 0;
+    for (int i : pool) {
+      const glm::dvec3& n = sphere[i].normal;
+      const double e = std::min({std::abs(glm::dot(n, d1)), std::abs(glm::dot(n, d2)), std::abs(glm::dot(n, d3))});
+      if (e < tol) score += sphere[i].weight * (1.0 - e / tol);
+    }
+    if (score > bestScore) bestScore = score, best = {d1, d2, d3};
+  }
+  if (bestScore <= 0) return makeError("no three orthogonal directions among the straight edges");
+
+  // Refine: label, fit each direction alone, label again.
+  std::vector<int> labels;
+  std::array<glm::dvec3, 3> dirs = best;
+  for (int round = 0; round < 3; ++round) {
+    assignLabels(sphere, dirs, labels);
+    for (int k = 0; k < 3; ++k) {
+      std::vector<int> members;
+      for (size_t i = 0; i < labels.size(); ++i)
+        if (labels[i] == k) members.push_back(static_cast<int>(i));
+      if (members.size() >= 2) dirs[k] = leastSquaresDirection(sphere, members);
+    }
+  }
+  assignLabels(sphere, dirs, labels);
+
+  // Corridor: the direction most nearly along the optical axis; vertical: the one
+  // most nearly along the image's v axis of the other two.
+  std::array<int, 3> order{0, 1, 2};
+  const int corridor = static_cast<int>(std::max_element(dirs.begin(), dirs.end(), [](auto& x, auto& y) {
+                                          return std::abs(x.z) < std::abs(y.z);
+                                        }) - dirs.begin());
+  int vertical = -1, horizontal = -1;
+  for (int k : order) {
+    if (k == corridor) continue;
+    if (vertical < 0 || std::abs(dirs[k].y) > std::abs(dirs[vertical].y)) vertical = k;
+  }
+  for (int k : order)
+    if (k != corridor && k != vertical) horizontal = k;
+
+  ManhattanFrame frame;
+  frame.labels.assign(labels.size(), -1);
+  const std::array<int, 3> roleOf = {corridor, horizontal, vertical};
+  for (size_t i = 0; i < labels.size(); ++i) {
+    for (int role = 0; role < 3; ++role)
+      if (labels[i] == roleOf[role]) frame.labels[i] = role;
+  }
+  const glm::dmat3 k(camera.focalPx, 0, 0, 0, camera.focalPx, 0, camera.principalPointPx.x, camera.principalPointPx.y, 1);
+  std::array<VanishingPoint*, 3> out = {&frame.corridor, &frame.horizontal, &frame.vertical};
+  for (int role = 0; role < 3; ++role) {
+    VanishingPoint& vp = *out[role];
+    std::vector<int> members;
+    for (size_t i = 0; i < frame.labels.size(); ++i)
+      if (frame.labels[i] == role) members.push_back(static_cast<int>(i));
+    glm::dvec3 p = k * dirs[roleOf[role]];
+    // A direction nearly parallel to the image plane vanishes far outside the photo:
+    // keep it as a point at infinity rather than at an unstable finite position.
+    if (std::abs(p.z) * 1e3 * diagonal < std::hypot(p.x, p.y)) p.z = 0;
+    if (std::abs(p.z) > 1e-12 && role == 0 && members.size() >= 2) {
+      const glm::dvec2 refined = refineFinitePoint(dehomogenize(p), segments, members);
+      p = homogeneous(refined);
+    }
+    vp.point = glm::normalize(p);
+    vp.inlierCount = static_cast<int>(members.size());
+    for (int i : members) vp.inlierLengthPx += segments[i].lengthPx;
+    vp.rmsAngleDeg = rmsAngleDeg(vp.point, segments, members);
+    const double support = 1.0 - std::exp(-vp.inlierLengthPx / diagonal);
+    if (role == 0) {
+      vp.confidence = vp.isFinite() ? sectorCoverage(vp.pixel(), segments, members, diagonal) * support : 0.0;
+    } else {
+      vp.confidence = 1.0 - std::exp(-2.0 * vp.inlierLengthPx / diagonal);
+    }
+  }
+  if (!frame.corridor.isFinite()) return makeError("no vanishing point along the view direction");
+  return frame;
+}
+
+std::optional<double> focalFromOrthogonalPoints(const VanishingPoint& v1, const VanishingPoint& v2,
+                                                glm::dvec2 principalPointPx, double imageDiagonalPx) {
+  // Points farther out than this make f^2 the small difference of large numbers.
+  const double maxDistance = 20.0 * imageDiagonalPx;
+  if (!isNear(v1.point, principalPointPx, maxDistance) || !isNear(v2.point, principalPointPx, maxDistance)) {
+    return std::nullopt;
+  }
+  const double f2 = -glm::dot(v1.pixel() - principalPointPx, v2.pixel() - principalPointPx);
+  if (!(f2 > 0)) return std::nullopt;
+  return std::sqrt(f2);
+}
+
+}  // namespace pw::metrology::detect

@@ -1,0 +1,62 @@
+#include "metrology/detect/working_image.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+namespace pw::metrology::detect {
+
+WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
+  WorkingImage w;
+  const int longSide = std::max(photoBgr.cols, photoBgr.rows);
+  w.scale = longSide > maxSidePx ? static_cast<double>(maxSidePx) / longSide : 1.0;
+  if (w.scale < 1.0) {
+    const cv::Size size(std::max(1, static_cast<int>(std::lround(photoBgr.cols * w.scale))),
+                        std::max(1, static_cast<int>(std::lround(photoBgr.rows * w.scale))));
+    cv::resize(photoBgr, w.bgr, size, 0, 0, cv::INTER_AREA);
+    // The rounded size sets the true scale; use the horizontal one.
+    w.scale = static_cast<double>(size.width) / photoBgr.cols;
+  } else {
+    w.bgr = photoBgr;
+  }
+  cv::cvtColor(w.bgr, w.gray, cv::COLOR_BGR2GRAY);
+
+  cv::Mat dx, dy;
+  cv::Sobel(w.bgr, dx, CV_16S, 1, 0, 3);
+  cv::Sobel(w.bgr, dy, CV_16S, 0, 1, 3);
+  w.gradX.create(w.bgr.size(), CV_32F);
+  w.gradY.create(w.bgr.size(), CV_32F);
+  for (int y = 0; y < w.bgr.rows; ++y) {
+    const cv::Vec3s* px = dx.ptr<cv::Vec3s>(y);
+    const cv::Vec3s* py = dy.ptr<cv::Vec3s>(y);
+    float* ox = w.gradX.ptr<float>(y);
+    float* oy = w.gradY.ptr<float>(y);
+    for (int x = 0; x < w.bgr.cols; ++x) {
+      int best = 0, bestMag = -1;
+      for (int c = 0; c < 3; ++c) {
+        const int mag = px[x][c] * px[x][c] + py[x][c] * py[x][c];
+        if (mag > bestMag) bestMag = mag, best = c;
+      }
+      // Sobel's 3x3 kernel sums 8 pixel differences' worth: /8 gives grey levels per pixel.
+      ox[x] = px[x][best] * 0.125f;
+      oy[x] = py[x][best] * 0.125f;
+    }
+  }
+  return w;
+}
+
+glm::dvec2 WorkingImage::gradient(glm::dvec2 p) const {
+  if (!(p.x >= 0 && p.y >= 0 && p.x <= gradX.cols - 1 && p.y <= gradX.rows - 1)) return {0, 0};
+  const int x0 = std::min(static_cast<int>(p.x), gradX.cols - 2 < 0 ? 0 : gradX.cols - 2);
+  const int y0 = std::min(static_cast<int>(p.y), gradX.rows - 2 < 0 ? 0 : gradX.rows - 2);
+  const int x1 = std::min(x0 + 1, gradX.cols - 1), y1 = std::min(y0 + 1, gradX.rows - 1);
+  const double fx = p.x - x0, fy = p.y - y0;
+  const auto sample = [&](const cv::Mat& m) {
+    const double a = m.at<float>(y0, x0), b = m.at<float>(y0, x1), c = m.at<float>(y1, x0), d = m.at<float>(y1, x1);
+    return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy;
+  };
+  return {sample(gradX), sample(gradY)};
+}
+
+}  // namespace pw::metrology::detect
