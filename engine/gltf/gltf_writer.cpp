@@ -3,9 +3,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <limits>
+#include <span>
 #include <string>
+#include <string_view>
 
 #include "base/atomic_file.h"
 #include "engine/gltf/gltf_document.h"
@@ -30,52 +34,72 @@ void appendUint32(std::vector<uint8_t>& out, uint32_t value) {
 // such bytes become U+FFFD rather than making the export fail.
 std::string dumpJson(const gltf::Json& doc) { return doc.dump(-1, ' ', false, gltf::Json::error_handler_t::replace); }
 
-std::string base64(const std::vector<uint8_t>& bytes) {
+// Base64 (RFC 4648) of `bytes`, written at `out` (4 characters per 3 bytes, padded).
+void base64Into(const std::vector<uint8_t>& bytes, char* out) {
   static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
   size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
+  for (; i + 2 < bytes.size(); i += 3, out += 4) {
     const uint32_t v = uint32_t(bytes[i]) << 16 | uint32_t(bytes[i + 1]) << 8 | bytes[i + 2];
-    out += {kAlphabet[v >> 18], kAlphabet[(v >> 12) & 63], kAlphabet[(v >> 6) & 63], kAlphabet[v & 63]};
+    out[0] = kAlphabet[v >> 18];
+    out[1] = kAlphabet[(v >> 12) & 63];
+    out[2] = kAlphabet[(v >> 6) & 63];
+    out[3] = kAlphabet[v & 63];
   }
-  if (i + 1 == bytes.size()) {
-    const uint32_t v = uint32_t(bytes[i]) << 16;
-    out += {kAlphabet[v >> 18], kAlphabet[(v >> 12) & 63], '=', '='};
-  } else if (i + 2 == bytes.size()) {
-    const uint32_t v = uint32_t(bytes[i]) << 16 | uint32_t(bytes[i + 1]) << 8;
-    out += {kAlphabet[v >> 18], kAlphabet[(v >> 12) & 63], kAlphabet[(v >> 6) & 63], '='};
+  if (i < bytes.size()) {
+    const bool two = i + 1 < bytes.size();
+    const uint32_t v = uint32_t(bytes[i]) << 16 | (two ? uint32_t(bytes[i + 1]) << 8 : 0);
+    out[0] = kAlphabet[v >> 18];
+    out[1] = kAlphabet[(v >> 12) & 63];
+    out[2] = two ? kAlphabet[(v >> 6) & 63] : '=';
+    out[3] = '=';
   }
-  return out;
 }
 
-Result<std::vector<uint8_t>> packGlb(const gltf::Json& doc, const std::vector<uint8_t>& bin) {
+// The GLB header, the JSON chunk and the BIN chunk's header: everything but the
+// binary data itself, which follows unchanged (it is already padded to 4 bytes).
+Result<std::vector<uint8_t>> glbHead(const gltf::Json& doc, const std::vector<uint8_t>& bin) {
   std::string json = dumpJson(doc);
   json.resize((json.size() + 3) & ~size_t{3}, ' ');  // the JSON chunk pads with spaces
-  const size_t total = kGlbHeaderBytes + kChunkHeaderBytes + json.size() + (bin.empty() ? 0 : kChunkHeaderBytes + bin.size());
+  const size_t total =
+      kGlbHeaderBytes + kChunkHeaderBytes + json.size() + (bin.empty() ? 0 : kChunkHeaderBytes + bin.size());
   if (total > std::numeric_limits<uint32_t>::max()) {
     return makeError("the scene needs " + std::to_string(total >> 20) + " MiB, more than a GLB file can hold (4 GiB)");
   }
-  std::vector<uint8_t> out;
-  out.reserve(total);
-  appendUint32(out, kGlbMagic);
-  appendUint32(out, kGlbVersion);
-  appendUint32(out, static_cast<uint32_t>(total));
-  appendUint32(out, static_cast<uint32_t>(json.size()));
-  appendUint32(out, kChunkJson);
-  out.insert(out.end(), json.begin(), json.end());
-  if (!bin.empty()) {  // bin is already padded to 4 bytes with zeros
-    appendUint32(out, static_cast<uint32_t>(bin.size()));
-    appendUint32(out, kChunkBin);
-    out.insert(out.end(), bin.begin(), bin.end());
+  std::vector<uint8_t> head;
+  head.reserve(kGlbHeaderBytes + 2 * kChunkHeaderBytes + json.size());
+  appendUint32(head, kGlbMagic);
+  appendUint32(head, kGlbVersion);
+  appendUint32(head, static_cast<uint32_t>(total));
+  appendUint32(head, static_cast<uint32_t>(json.size()));
+  appendUint32(head, kChunkJson);
+  head.insert(head.end(), json.begin(), json.end());
+  if (!bin.empty()) {
+    appendUint32(head, static_cast<uint32_t>(bin.size()));
+    appendUint32(head, kChunkBin);
   }
-  return out;
+  return head;
 }
 
 std::vector<uint8_t> packEmbeddedJson(gltf::Json& doc, const std::vector<uint8_t>& bin) {
-  if (!bin.empty()) doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
+  if (bin.empty()) {
+    const std::string json = dumpJson(doc);
+    return std::vector<uint8_t>(json.begin(), json.end());
+  }
+  // The data URI is spliced into the dumped text rather than put in the JSON value:
+  // nlohmann would copy and scan its megabytes several times. The empty "uri" is the
+  // only one in the document, and `"uri":""` cannot come from a string's content,
+  // whose quotes are always escaped.
+  static constexpr std::string_view kPrefix = "data:application/octet-stream;base64,";
+  doc["buffers"][0]["uri"] = "";
   const std::string json = dumpJson(doc);
-  return std::vector<uint8_t>(json.begin(), json.end());
+  const size_t slot = json.find("\"uri\":\"\"") + 7;  // between the two quotes
+  const size_t encodedSize = (bin.size() + 2) / 3 * 4;
+  std::vector<uint8_t> out(json.size() + kPrefix.size() + encodedSize);
+  std::memcpy(out.data(), json.data(), slot);
+  std::memcpy(out.data() + slot, kPrefix.data(), kPrefix.size());
+  base64Into(bin, reinterpret_cast<char*>(out.data() + slot + kPrefix.size()));
+  std::memcpy(out.data() + slot + kPrefix.size() + encodedSize, json.data() + slot, json.size() - slot);
+  return out;
 }
 
 }  // namespace
@@ -83,8 +107,11 @@ std::vector<uint8_t> packEmbeddedJson(gltf::Json& doc, const std::vector<uint8_t
 Result<std::vector<uint8_t>> encodeGltf(const Scene& scene, GltfContainer container) {
   gltf::DocumentBuilder builder(scene);
   PW_TRY(builder.build());
-  if (container == GltfContainer::kGlb) return packGlb(builder.document(), builder.binary());
-  return packEmbeddedJson(builder.document(), builder.binary());
+  if (container == GltfContainer::kEmbeddedJson) return packEmbeddedJson(builder.document(), builder.binary());
+  auto head = glbHead(builder.document(), builder.binary());
+  if (!head) return head.error();
+  head->insert(head->end(), builder.binary().begin(), builder.binary().end());
+  return head;
 }
 
 Status writeGltf(const Scene& scene, const std::filesystem::path& out) {
@@ -98,9 +125,27 @@ Status writeGltf(const Scene& scene, const std::filesystem::path& out) {
   if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path(), ec)) {
     return makeError(out.string() + ": the folder " + out.parent_path().string() + " does not exist");
   }
-  auto bytes = encodeGltf(scene, extension == ".glb" ? GltfContainer::kGlb : GltfContainer::kEmbeddedJson);
-  if (!bytes) return makeError(out.string() + ": " + bytes.message());
-  return writeFileAtomic(out, std::span<const char>(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
+  gltf::DocumentBuilder builder(scene);
+  if (Status built = builder.build(); !built) return makeError(out.string() + ": " + built.message());
+  std::vector<uint8_t> head;
+  std::span<const uint8_t> tail;  // the GLB's binary data, written straight from the builder
+  if (extension == ".glb") {
+    auto glb = glbHead(builder.document(), builder.binary());
+    if (!glb) return makeError(out.string() + ": " + glb.message());
+    head = std::move(*glb);
+    tail = builder.binary();
+  } else {
+    head = packEmbeddedJson(builder.document(), builder.binary());
+  }
+  return writeViaTempFile(out, [&](const std::filesystem::path& temp) -> Status {
+    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+    if (!file) return makeError(out.string() + ": cannot write: " + std::strerror(errno));
+    file.write(reinterpret_cast<const char*>(head.data()), static_cast<std::streamsize>(head.size()));
+    file.write(reinterpret_cast<const char*>(tail.data()), static_cast<std::streamsize>(tail.size()));
+    file.flush();
+    if (!file) return makeError(out.string() + ": write failed (disk full?)");
+    return {};
+  });
 }
 
 }  // namespace pw::engine
