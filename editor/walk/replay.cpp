@@ -61,7 +61,7 @@ Result<std::vector<ReplayEvent>> parseReplay(const std::string& text, const std:
       if (!(words >> e.dx >> e.dy) || !std::isfinite(e.dx) || !std::isfinite(e.dy)) return makeError(at + "expected 'mouse DX DY' in pixels");
     } else if (what == "viewpoint") {
       e.kind = ReplayEvent::Kind::kViewpoint;
-      if (!(words >> e.index) || e.index < 0) return makeError(at + "expected 'viewpoint N' with N = 0, 1, ...");
+      if (!(words >> e.index) || e.index < 1) return makeError(at + "expected 'viewpoint N' with N = 1, 2, ... (as render --viewpoint)");
     } else if (what == "resize") {
       e.kind = ReplayEvent::Kind::kResize;
       if (!(words >> e.dx >> e.dy) || e.dx < 1 || e.dy < 1 || e.dx > 16384 || e.dy > 16384) {

@@ -5,7 +5,7 @@
 //   10 key W down          (key names as GLFW names them: W, A, S, D, UP, LEFT_SHIFT,
 //   70 key W up             PAGE_UP, PAGE_DOWN, HOME, F12, H, TAB, ...)
 //   80 mouse 120 -30       (pointer motion in pixels, as if the cursor were captured)
-//   90 viewpoint 2         (jump to viewpoint 2, counting from 0)
+//   90 viewpoint 2         (go to the second viewpoint, counting from 1 as render does)
 //   95 resize 800 600      (resize the window)
 //  100 capture out.png     (save the frame drawn at this frame)
 //  120 quit

@@ -1,0 +1,174 @@
+// photowalk tour: a smooth walk through a model, rendered to numbered PNG frames and,
+// where OpenCV's video writer can, a video.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <glm/gtc/constants.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "base/atomic_file.h"
+#include "editor/command.h"
+#include "editor/model_io.h"
+#include "editor/modeling/tour.h"
+#include "engine/gpu/renderer.h"
+
+namespace pw::editor {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr const char* kUsage =
+    "usage: photowalk tour MODEL -o DIR [--frames N] [--size WxH] [--video OUT.mp4] [--fps F] [--cpu]\n\n"
+    "Renders a walk through MODEL to DIR/frame_0000.png, frame_0001.png, ... A model made\n"
+    "by `photowalk build` carries its tour: down each corridor at eye height, into side\n"
+    "corridors, turning round at the far ends and back. Other models are toured through\n"
+    "their viewpoints.\n\n"
+    "  -o, --output DIR   folder for the frames (created if missing)\n"
+    "  --frames N         number of frames (default 240)\n"
+    "  --size WxH         frame size in pixels (default 1280x720)\n"
+    "  --video OUT.mp4    also write a video (MPEG-4; .avi for Motion JPEG)\n"
+    "  --fps F            video frame rate (default 30)\n"
+    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n";
+
+// Cameras through the scene's viewpoints in turn, back to the first, eased in and out.
+std::vector<engine::Camera> viewpointTour(const engine::Scene& scene, int frames) {
+  std::vector<engine::Viewpoint> stops = scene.viewpoints;
+  if (stops.empty()) stops.push_back(engine::defaultViewpoint(scene));
+  std::vector<engine::Camera> cameras;
+  const int legs = static_cast<int>(stops.size());
+  for (int i = 0; i < frames; ++i) {
+    const double t = frames > 1 ? static_cast<double>(i) / (frames - 1) * legs : 0.0;
+    const int leg = std::min(static_cast<int>(t), legs - 1);
+    const double u = t - leg, ease = u * u * (3 - 2 * u);
+    const engine::Camera a = engine::cameraFromViewpoint(stops[leg]);
+    const engine::Camera b = engine::cameraFromViewpoint(stops[(leg + 1) % legs]);
+    engine::Camera c = a;
+    c.position = glm::mix(a.position, b.position, static_cast<float>(ease));
+    c.orientation = glm::slerp(a.orientation, b.orientation, static_cast<float>(ease));
+    c.fieldOfViewRad = glm::mix(a.fieldOfViewRad, b.fieldOfViewRad, static_cast<float>(ease));
+    if (legs == 1) {  // one viewpoint: turn round on the spot
+      c.orientation = glm::angleAxis(static_cast<float>(glm::two_pi<double>() * i / frames), glm::vec3(0, 1, 0)) *
+                      a.orientation;
+    }
+    cameras.push_back(c);
+  }
+  return cameras;
+}
+
+void showProgress(int done, int total) {
+  if (!isatty(fileno(stderr))) return;
+  const int width = 40, filled = total > 0 ? width * done / total : width;
+  std::fprintf(stderr, "\r[%s%s] %3d%%  frame %d/%d", std::string(filled, '#').c_str(),
+               std::string(width - filled, ' ').c_str(), total > 0 ? 100 * done / total : 100, done, total);
+  if (done == total) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
+int runTour(Args& args) {
+  const auto output = args.value("--output", "-o");
+  const auto framesText = args.value("--frames");
+  const auto sizeText = args.value("--size");
+  const auto videoPath = args.value("--video");
+  const auto fpsText = args.value("--fps");
+  engine::RendererOptions options;
+  options.forceCpu = args.flag("--cpu");
+  const std::vector<std::string> positionals = args.positionals();
+  if (auto finished = args.finish(); !finished) return fail(finished.message());
+  if (positionals.size() != 1) return fail("tour takes one model; see photowalk tour --help");
+  if (!output) return fail("tour needs -o DIR for the frames");
+
+  int frames = 240;
+  if (framesText) {
+    auto n = parseNumber(*framesText, "--frames");
+    if (!n) return fail(n.message());
+    if (*n < 1 || *n > 100000 || *n != std::floor(*n)) return fail("--frames must be a whole number from 1 to 100000");
+    frames = static_cast<int>(*n);
+  }
+  std::pair<int, int> size{1280, 720};
+  if (sizeText) {
+    auto parsed = parseSize(*sizeText, "--size");
+    if (!parsed) return fail(parsed.message());
+    size = *parsed;
+  }
+  double fps = 30;
+  if (fpsText) {
+    auto parsed = parseNumber(*fpsText, "--fps");
+    if (!parsed) return fail(parsed.message());
+    if (*parsed <= 0 || *parsed > 240) return fail("--fps must be between 0 and 240");
+    fps = *parsed;
+  }
+
+  std::vector<std::string> warnings;
+  auto scene = loadModel(positionals[0], &warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (!scene) return fail(scene.message());
+
+  std::vector<engine::Camera> cameras;
+  const float fov = scene->viewpoints.empty() ? 0.785398f : scene->viewpoints[0].fieldOfViewRad;
+  if (auto waypoints = modeling::decodeTourInfo(scene->info)) {
+    modeling::TourOptions tourOptions;
+    cameras = modeling::TourPath(*waypoints, tourOptions).cameras(frames, fov);
+  } else {
+    cameras = viewpointTour(*scene, frames);
+  }
+
+  std::error_code ec;
+  fs::create_directories(*output, ec);
+  if (!fs::is_directory(*output, ec)) return fail(*output + ": cannot create this folder");
+
+  auto renderer = engine::Renderer::create(options);
+  if (!renderer) return fail(renderer.message());
+  if (auto uploaded = (*renderer)->setScene(*scene); !uploaded) return fail(uploaded.message());
+
+  cv::VideoWriter video;
+  fs::path videoTemp;
+  if (videoPath) {
+    const fs::path target(*videoPath);
+    const bool avi = target.extension() == ".avi";
+    videoTemp = target.parent_path() / ("." + target.stem().string() + ".partial" + target.extension().string());
+    video.open(videoTemp.string(), cv::VideoWriter::fourcc(avi ? 'M' : 'm', avi ? 'J' : 'p', avi ? 'P' : '4', avi ? 'G' : 'v'),
+               fps, {size.first, size.second});
+    if (!video.isOpened()) {
+      std::fprintf(stderr, "warning: %s: this OpenCV cannot write that video format; writing frames only\n",
+                   videoPath->c_str());
+    }
+  }
+
+  // A failed tour leaves no half-written video behind.
+  const auto abandon = [&](const std::string& message) {
+    if (video.isOpened()) video.release();
+    if (!videoTemp.empty()) fs::remove(videoTemp, ec);
+    return fail(message);
+  };
+  for (int i = 0; i < frames; ++i) {
+    auto image = (*renderer)->renderToImage(cameras[i], size.first, size.second);
+    if (!image) return abandon(image.message());
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    if (auto saved = engine::saveImage(fs::path(*output) / name, *image); !saved) return abandon(saved.message());
+    if (video.isOpened()) {
+      cv::Mat rgba(image->height, image->width, CV_8UC4, image->rgba.data()), bgr;
+      cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
+      video.write(bgr);
+    }
+    showProgress(i + 1, frames);
+  }
+  std::printf("%d frames of %dx%d in %s\n", frames, size.first, size.second, output->c_str());
+  if (video.isOpened()) {
+    video.release();
+    fs::rename(videoTemp, *videoPath, ec);
+    if (ec) return fail(*videoPath + ": cannot write: " + ec.message());
+    std::printf("video: %s (%.0f fps)\n", videoPath->c_str(), fps);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+PW_COMMAND(tour, "tour", "render a walk through a model to PNG frames (and a video)", kUsage, runTour);
+
+}  // namespace pw::editor

@@ -1,0 +1,42 @@
+// The walkthrough window: GLFW + the Vulkan swapchain (engine::Presenter) + an ImGui
+// overlay, driving pw::walk's avatar at a fixed simulation step of 1/60 s.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/result.h"
+#include "editor/walk/replay.h"
+#include "engine/scene/scene.h"
+
+namespace pw::editor {
+
+struct WalkOptions {
+  int width = 1280;
+  int height = 720;
+  bool vsync = true;
+  bool forceCpu = false;
+  double speedScale = 1.0;
+  std::string title = "photowalk";
+  std::optional<std::vector<walk::ReplayEvent>> replay;  // set: deterministic, input ignored
+  std::optional<std::filesystem::path> tracePath;        // CSV, one row per simulated frame
+  std::filesystem::path screenshotDir = ".";             // F12
+  bool showOverlay = true;
+};
+
+struct WalkReport {
+  long framesDrawn = 0;
+  long framesSimulated = 0;
+  double meanFrameMs = 0;    // wall-clock per drawn frame
+  double medianFrameMs = 0;
+  size_t validationMessages = 0;
+  std::string deviceName;
+};
+
+// Opens the window and walks until it is closed (or the replay quits). Errors: no
+// display, no Vulkan device that can present, a capture that cannot be written.
+Result<WalkReport> runWalkWindow(const engine::Scene& scene, const WalkOptions& options);
+
+}  // namespace pw::editor
