@@ -139,8 +139,9 @@ Status DocumentBuilder::addCamera(const Viewpoint& viewpoint, size_t index) {
     return makeError(label + ": its position or orientation is not a finite number");
   }
   const PerspectiveCamera lens = perspectiveFromViewpoint(viewpoint, scene_.navigation);
-  Json perspective = {{"yfov", shortestDouble(lens.yfovRad)}, {"znear", shortestDouble(lens.znearM)}};
-  if (lens.zfarM) perspective["zfar"] = shortestDouble(*lens.zfarM);
+  Json perspective = {{"yfov", shortestDouble(lens.yfovRad)},
+                      {"znear", shortestDouble(lens.znearM)},
+                      {"zfar", shortestDouble(lens.zfarM)}};
   Json camera = {{"type", "perspective"}, {"perspective", std::move(perspective)}};
   if (!viewpoint.description.empty()) camera["name"] = viewpoint.description;
   doc_["cameras"].push_back(std::move(camera));

@@ -69,11 +69,15 @@ PerspectiveCamera perspectiveFromViewpoint(const Viewpoint& viewpoint, const Nav
   // VRML97 6.29 recommends the near clipping plane at half the avatar's collision
   // radius (avatarSize[0]); without one, the renderer's own default.
   camera.znearM = navigation.avatarRadiusM > 0.0f ? 0.5f * navigation.avatarRadiusM : Camera{}.nearM;
-  // visibilityLimit is the far clipping plane; 0 means infinite.
+  // visibilityLimit is the far clipping plane; 0 means infinite. glTF allows an
+  // infinite projection (no zfar), but some loaders reject a camera without zfar
+  // (Castle Game Engine's view3dscene 4.2: "missing zfar field"), so infinity becomes
+  // the far plane photowalk's own renderer uses.
+  camera.zfarM = Camera{}.farM;
   if (navigation.visibilityLimitM > 0.0f && std::isfinite(navigation.visibilityLimitM)) {
     camera.zfarM = navigation.visibilityLimitM;
-    if (camera.znearM >= *camera.zfarM) camera.znearM = 1e-3f * *camera.zfarM;
   }
+  if (camera.znearM >= camera.zfarM) camera.znearM = 1e-3f * camera.zfarM;
   return camera;
 }
 

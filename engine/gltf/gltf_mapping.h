@@ -50,7 +50,7 @@ std::optional<Trs> decomposeTrs(const glm::mat4& m);
 struct PerspectiveCamera {
   float yfovRad = 0;
   float znearM = 0;
-  std::optional<float> zfarM;  // none: infinite projection
+  float zfarM = 0;  // visibilityLimit, or the renderer's far plane when that is infinite
 };
 PerspectiveCamera perspectiveFromViewpoint(const Viewpoint& viewpoint, const NavigationInfo& navigation);
 

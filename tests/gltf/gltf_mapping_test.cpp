@@ -1,4 +1,5 @@
 #include "engine/gltf/gltf_mapping.h"
+#include "engine/scene/camera.h"
 
 #include <cmath>
 #include <random>
@@ -122,11 +123,13 @@ TEST(GltfMapping, CameraClipPlanesComeFromNavigationInfo) {
   PerspectiveCamera camera = perspectiveFromViewpoint(viewpoint, navigation);
   EXPECT_FLOAT_EQ(camera.yfovRad, 0.9f);
   EXPECT_FLOAT_EQ(camera.znearM, 0.15f);
-  EXPECT_FALSE(camera.zfarM);
+  EXPECT_FLOAT_EQ(camera.zfarM, Camera{}.farM);  // infinite: the renderer's far plane
+  navigation.visibilityLimitM = 50.0f;
+  EXPECT_FLOAT_EQ(perspectiveFromViewpoint(viewpoint, navigation).zfarM, 50.0f);
   navigation.visibilityLimitM = 0.1f;  // nearer than the near plane would be
   camera = perspectiveFromViewpoint(viewpoint, navigation);
-  ASSERT_TRUE(camera.zfarM);
-  EXPECT_LT(camera.znearM, *camera.zfarM);
+  EXPECT_FLOAT_EQ(camera.zfarM, 0.1f);
+  EXPECT_LT(camera.znearM, camera.zfarM);
 }
 
 TEST(GltfMapping, DefaultTexCoordsFollowTheBoundingBox) {
