@@ -1,0 +1,41 @@
+// Golden-image comparison for render tests.
+//
+// Tolerance: at least 99% of pixels within 2/255 in every channel, and at least
+// 99.9% within 16/255 (so a missing thin feature, a few hundred pixels, still fails).
+// Lavapipe is deterministic on one machine; the slack absorbs other CPUs' vector
+// widths and LLVM versions at edges and in pow()/acos().
+//
+// Goldens change only through the explicit update step: run the test with
+// PW_UPDATE_GOLDEN=1, look at the new PNG, commit it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "engine/scene/image.h"
+
+namespace pw::test {
+
+struct ImageDifference {
+  double fractionWithin2 = 0;   // pixels whose channels all differ by <= 2
+  double fractionWithin16 = 0;  // ... by <= 16
+  int maxDifference = 0;
+  bool sizeMismatch = false;
+  bool passes() const { return !sizeMismatch && fractionWithin2 >= 0.99 && fractionWithin16 >= 0.999; }
+  std::string describe() const;
+};
+
+ImageDifference compareImages(const engine::Image& actual, const engine::Image& expected);
+
+// |actual - expected| x 8 per channel, pixels beyond 2/255 marked in red on the right half.
+engine::Image differenceImage(const engine::Image& actual, const engine::Image& expected);
+
+// Compares `actual` with PW_GOLDEN_DIR/NAME.png. On failure writes NAME_actual.png and
+// NAME_diff.png under PW_BINARY_DIR/test-output and returns a message naming them;
+// with PW_UPDATE_GOLDEN=1 writes the golden instead. Empty string: passed.
+std::string checkGolden(const engine::Image& actual, const std::string& name);
+
+// Output folder for images tests write (PW_BINARY_DIR/test-output), created on demand.
+std::filesystem::path testOutputDir();
+
+}  // namespace pw::test

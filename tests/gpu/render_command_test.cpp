@@ -1,0 +1,100 @@
+// photowalk render, end to end: exit codes, messages, and the PNG it writes.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "engine/scene/image.h"
+#include "tests/gpu/image_compare.h"
+
+namespace pw::engine {
+namespace {
+
+struct CommandRun {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr
+};
+
+CommandRun photowalk(const std::string& arguments) {
+  CommandRun run;
+  const std::string command = std::string(PW_PHOTOWALK) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
+  const int status = pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::filesystem::path outputPath(const std::string& name) {
+  const std::filesystem::path path = test::testOutputDir() / name;
+  std::filesystem::remove(path);
+  return path;
+}
+
+TEST(RenderCommand, WritesTheSampleRoomAsPng) {
+  const auto out = outputPath("render_command_sample.png");
+  const CommandRun run = photowalk("render sample -o " + out.string() + " --size 96x54 --cpu");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  auto image = loadImage(out);
+  ASSERT_TRUE(image.ok()) << image.message();
+  EXPECT_EQ(image->width, 96);
+  EXPECT_EQ(image->height, 54);
+  EXPECT_NE(run.output.find("llvmpipe"), std::string::npos) << run.output;
+}
+
+TEST(RenderCommand, SecondViewpointDiffersFromTheFirst) {
+  const auto first = outputPath("render_command_vp1.png"), second = outputPath("render_command_vp2.png");
+  ASSERT_EQ(photowalk("render sample -o " + first.string() + " --size 64x48 --msaa 1").exitCode, 0);
+  ASSERT_EQ(photowalk("render sample -o " + second.string() + " --size 64x48 --msaa 1 --viewpoint 2").exitCode, 0);
+  EXPECT_NE(loadImage(first)->rgba, loadImage(second)->rgba);
+}
+
+TEST(RenderCommand, ZeroSizeIsAnError) {
+  const auto out = outputPath("render_command_zero.png");
+  const CommandRun run = photowalk("render sample -o " + out.string() + " --size 0x0");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("error: --size 0x0 is out of range"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderCommand, HugeSizeIsAnError) {
+  const CommandRun run = photowalk("render sample -o " + outputPath("x.png").string() + " --size 100000x100000");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("100000x100000 is out of range"), std::string::npos) << run.output;
+}
+
+TEST(RenderCommand, ViewpointOutOfRangeNamesTheCount) {
+  const CommandRun run = photowalk("render sample -o " + outputPath("x.png").string() + " --viewpoint 3");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("sample has 2 viewpoints"), std::string::npos) << run.output;
+}
+
+TEST(RenderCommand, MissingOrUnsupportedSceneIsNamed) {
+  const CommandRun missing = photowalk("render no/such/room.wrl -o " + outputPath("x.png").string());
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.output.find("no/such/room.wrl: no such file"), std::string::npos) << missing.output;
+}
+
+TEST(RenderCommand, UnwritableOutputLeavesNoFile) {
+  const CommandRun run = photowalk("render sample -o /nonexistent-dir/frame.png --size 32x32");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("/nonexistent-dir/frame.png"), std::string::npos) << run.output;
+}
+
+TEST(RenderCommand, BadMsaaAndMissingOutputAreErrors) {
+  const CommandRun msaa = photowalk("render sample -o " + outputPath("x.png").string() + " --msaa 3 --size 8x8");
+  EXPECT_EQ(msaa.exitCode, 1);
+  EXPECT_NE(msaa.output.find("MSAA 3x is not available"), std::string::npos) << msaa.output;
+  const CommandRun noOutput = photowalk("render sample");
+  EXPECT_EQ(noOutput.exitCode, 1);
+  EXPECT_NE(noOutput.output.find("-o OUT.png"), std::string::npos) << noOutput.output;
+}
+
+}  // namespace
+}  // namespace pw::engine

@@ -1,0 +1,193 @@
+#include "engine/gpu/scene_packing.h"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "engine/gpu/color_space.h"
+#include "engine/scene/sample_scene.h"
+
+namespace pw::engine::gpu {
+namespace {
+
+std::shared_ptr<Mesh> triangle() {
+  auto mesh = std::make_shared<Mesh>();
+  mesh->positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh->normals.assign(3, glm::vec3(0, 0, 1));
+  mesh->indices = {0, 1, 2};
+  return mesh;
+}
+
+Shape shapeOf(std::shared_ptr<const Mesh> mesh, std::optional<Material> material = Material{}) {
+  Shape s;
+  s.mesh = std::move(mesh);
+  auto a = std::make_shared<Appearance>();
+  a->material = material;
+  s.appearance = a;
+  return s;
+}
+
+TEST(SrgbTransfer, RoundTripsAndHitsKnownValues) {
+  EXPECT_NEAR(srgbToLinear(0.5f), 0.21404f, 1e-5f);
+  EXPECT_NEAR(linearToSrgb(0.21404f), 0.5f, 1e-5f);
+  EXPECT_FLOAT_EQ(srgbToLinear(0.0f), 0.0f);
+  EXPECT_FLOAT_EQ(srgbToLinear(1.0f), 1.0f);
+  for (int i = 0; i <= 255; ++i) {
+    const float v = float(i) / 255.0f;
+    EXPECT_NEAR(linearToSrgb(srgbToLinear(v)), v, 1e-5f);
+  }
+}
+
+TEST(NormalMatrix, IsTheInverseTransposeUpToScale) {
+  const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, 1.0f)), 0.7f, glm::vec3(1, 2, 3));
+  const glm::mat3 expected = glm::transpose(glm::inverse(glm::mat3(model)));
+  const glm::vec3 n = glm::normalize(glm::vec3(0.3f, -0.4f, 0.8f));
+  const glm::vec3 a = glm::normalize(normalMatrix(model) * n);
+  const glm::vec3 b = glm::normalize(expected * n);
+  EXPECT_NEAR(glm::dot(a, b), 1.0f, 1e-5f);
+}
+
+TEST(NormalMatrix, KeepsNormalsOutwardUnderMirroring) {
+  const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1));
+  EXPECT_NEAR((normalMatrix(mirror) * glm::vec3(1, 0, 0)).x, -1.0f, 1e-6f);  // +X face moved to -X, faces -X
+}
+
+TEST(NormalMatrix, StaysFiniteForAFlattenedShape) {
+  const glm::mat3 m = normalMatrix(glm::scale(glm::mat4(1.0f), glm::vec3(1, 0, 1)));
+  const glm::vec3 n = m * glm::vec3(0, 1, 0);
+  EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+  EXPECT_GT(n.y, 0.0f);
+}
+
+TEST(PackScene, SharedMeshIsStoredOnce) {
+  Scene scene;
+  auto mesh = triangle();
+  scene.shapes.push_back(shapeOf(mesh));
+  scene.shapes.push_back(shapeOf(mesh));
+  scene.shapes.back().transform = glm::translate(glm::mat4(1.0f), glm::vec3(5, 0, 0));
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok()) << packed.message();
+  EXPECT_EQ(packed->vertices.size(), 3u);
+  EXPECT_EQ(packed->indices.size(), 3u);
+  ASSERT_EQ(packed->opaque.size(), 2u);
+  EXPECT_EQ(packed->shapes.size(), 2u);
+  EXPECT_EQ(packed->opaque[1].worldBounds.min.x, 5.0f);
+}
+
+TEST(PackScene, TransparencyDecidesTheDrawList) {
+  Scene scene;
+  Material glass;
+  glass.transparency = 0.5f;
+  scene.shapes.push_back(shapeOf(triangle(), glass));
+  scene.shapes.push_back(shapeOf(triangle()));
+  auto coloured = triangle();
+  coloured->colors = {{1, 0, 0, 1}, {0, 1, 0, 0.5f}, {0, 0, 1, 1}};
+  scene.shapes.push_back(shapeOf(coloured));
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok());
+  EXPECT_EQ(packed->opaque.size(), 1u);
+  EXPECT_EQ(packed->transparent.size(), 2u);
+  EXPECT_TRUE(packed->transparent[0].variant.blended);
+}
+
+TEST(PackScene, NoMaterialMeansUnlitAndLinesUseTheEmissiveColour) {
+  Scene scene;
+  scene.shapes.push_back(shapeOf(triangle(), std::nullopt));
+  auto lines = std::make_shared<Mesh>();
+  lines->topology = Topology::kLines;
+  lines->positions = {{0, 0, 0}, {1, 0, 0}};
+  lines->indices = {0, 1};
+  Material m;
+  m.emissiveColor = {1.0f, 0.5f, 0.0f};
+  scene.shapes.push_back(shapeOf(lines, m));
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok()) << packed.message();
+  ASSERT_EQ(packed->shapes.size(), 2u);
+  EXPECT_TRUE(packed->shapes[0].material.flags.x & kMaterialUnlit);
+  EXPECT_EQ(glm::vec3(packed->shapes[0].material.diffuseAmbient), glm::vec3(1.0f));
+  EXPECT_TRUE(packed->shapes[1].material.flags.x & kMaterialUnlit);
+  EXPECT_NEAR(packed->shapes[1].material.diffuseAmbient.g, srgbToLinear(0.5f), 1e-6f);
+  EXPECT_FALSE(packed->opaque[1].cullBackFaces);
+}
+
+TEST(PackScene, MirroredTransformFlipsTheFrontFace) {
+  Scene scene;
+  scene.shapes.push_back(shapeOf(triangle()));
+  scene.shapes[0].transform = glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1));
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok());
+  EXPECT_TRUE(packed->opaque[0].clockwiseFront);
+}
+
+TEST(PackScene, MissingNormalsAreGenerated) {
+  Scene scene;
+  auto mesh = triangle();
+  mesh->normals.clear();
+  scene.shapes.push_back(shapeOf(mesh));
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok());
+  EXPECT_NEAR(packed->vertices[0].normal.z, 1.0f, 1e-6f);
+}
+
+TEST(PackScene, BadIndexIsAnErrorNamingTheShape) {
+  Scene scene;
+  auto mesh = triangle();
+  mesh->indices = {0, 1, 7};
+  scene.shapes.push_back(shapeOf(mesh));
+  scene.shapes[0].name = "wall";
+  auto packed = packScene(scene);
+  ASSERT_FALSE(packed.ok());
+  EXPECT_EQ(packed.message(), "shape 'wall': index 7 (at 2) is out of range; the mesh has 3 vertices");
+}
+
+TEST(PackScene, MismatchedAttributesAndNonFiniteNumbersAreErrors) {
+  Scene scene;
+  auto mesh = triangle();
+  mesh->texCoords = {{0, 0}};
+  scene.shapes.push_back(shapeOf(mesh));
+  auto packed = packScene(scene);
+  ASSERT_FALSE(packed.ok());
+  EXPECT_NE(packed.message().find("1 texture coordinates for 3 positions"), std::string::npos) << packed.message();
+
+  Scene nanScene;
+  nanScene.shapes.push_back(shapeOf(triangle()));
+  nanScene.shapes[0].transform[3][0] = std::nanf("");
+  EXPECT_FALSE(packScene(nanScene).ok());
+}
+
+TEST(PackScene, TextureWithoutImageNamesItsUrl) {
+  Scene scene;
+  scene.shapes.push_back(shapeOf(triangle()));
+  auto texture = std::make_shared<Texture>();
+  texture->url = "floor.jpg";
+  auto appearance = std::make_shared<Appearance>(*scene.shapes[0].appearance);
+  appearance->texture = texture;
+  scene.shapes[0].appearance = appearance;
+  auto packed = packScene(scene);
+  ASSERT_FALSE(packed.ok());
+  EXPECT_NE(packed.message().find("texture floor.jpg"), std::string::npos) << packed.message();
+}
+
+TEST(PackScene, SampleSceneHasEveryKindOfDraw) {
+  auto packed = packScene(makeSampleScene());
+  ASSERT_TRUE(packed.ok()) << packed.message();
+  EXPECT_EQ(packed->opaque.size() + packed->transparent.size(), 13u);
+  EXPECT_EQ(packed->transparent.size(), 1u);  // the glass pane
+  EXPECT_EQ(packed->lights.size(), 2u);
+  EXPECT_EQ(packed->textures.size(), 4u);
+  bool lines = false, points = false, mirrored = false;
+  for (const DrawItem& d : packed->opaque) {
+    lines |= d.variant.topology == Topology::kLines;
+    points |= d.variant.topology == Topology::kPoints;
+    mirrored |= d.clockwiseFront;
+  }
+  EXPECT_TRUE(lines && points && mirrored);
+  // Opaque draws come grouped by pipeline.
+  for (size_t i = 1; i < packed->opaque.size(); ++i) {
+    EXPECT_LE(packed->opaque[i - 1].variant.index(), packed->opaque[i].variant.index());
+  }
+}
+
+}  // namespace
+}  // namespace pw::engine::gpu
