@@ -1,6 +1,10 @@
 #include "editor/shot_file.h"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -41,6 +45,50 @@ Result<glm::dvec2> point(const json& value, const std::string& what, const std::
   return p;
 }
 
+// Sends what is written to stderr (file descriptor 2, where C decoders print) to a
+// temporary file while it lives, then restores it. Used only around image decoding,
+// which runs before any other thread of the program could have anything to say.
+class StderrCapture {
+ public:
+  StderrCapture() {
+    std::fflush(stderr);
+    file_ = std::tmpfile();
+    saved_ = file_ ? ::dup(2) : -1;
+    if (saved_ >= 0) ::dup2(::fileno(file_), 2);
+  }
+  ~StderrCapture() {
+    restore();
+    if (file_) std::fclose(file_);
+  }
+  StderrCapture(const StderrCapture&) = delete;
+  StderrCapture& operator=(const StderrCapture&) = delete;
+
+  // The first non-empty line written so far (restores stderr first).
+  std::string firstLine() {
+    restore();
+    if (!file_) return {};
+    std::rewind(file_);
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, file_)) {
+      std::string line(buffer);
+      while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+      if (!line.empty()) return line;
+    }
+    return {};
+  }
+
+ private:
+  void restore() {
+    if (saved_ < 0) return;
+    std::fflush(stderr);
+    ::dup2(saved_, 2);
+    ::close(saved_);
+    saved_ = -1;
+  }
+  std::FILE* file_ = nullptr;
+  int saved_ = -1;
+};
+
 }  // namespace
 
 Result<metrology::Shot> readShotFile(const fs::path& path) {
@@ -50,8 +98,11 @@ Result<metrology::Shot> readShotFile(const fs::path& path) {
   json doc;
   try {
     doc = json::parse(*text);
-  } catch (const json::parse_error& e) {
-    return makeError(where + ": not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")");
+  } catch (const json::exception& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 9: ...".
+    std::string what = e.what();
+    if (const size_t close = what.find("] "); close != std::string::npos) what = what.substr(close + 2);
+    return makeError(where + ": not valid JSON: " + what);
   }
   if (!doc.is_object()) return makeError(where + ": a shot file is a JSON object");
 
@@ -148,12 +199,22 @@ Result<LoadedShot> loadShot(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(s.imagePath, ec)) return makeError(path.string() + ": image " + s.imagePath + " does not exist");
   if (fs::file_size(s.imagePath, ec) == 0) return makeError(path.string() + ": image " + s.imagePath + " is empty");
-  try {
-    loaded.image = cv::imread(s.imagePath, cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-    loaded.image.release();
+  std::string decoderSaid;
+  {
+    // libpng and libjpeg print their complaints on stderr themselves; keep them out
+    // of the one-line error and quote the first one instead.
+    StderrCapture capture;
+    try {
+      loaded.image = cv::imread(s.imagePath, cv::IMREAD_COLOR);
+    } catch (const cv::Exception&) {
+      loaded.image.release();
+    }
+    decoderSaid = capture.firstLine();
   }
-  if (loaded.image.empty()) return makeError(path.string() + ": image " + s.imagePath + " is not a readable PNG/JPEG");
+  if (loaded.image.empty()) {
+    return makeError(path.string() + ": image " + s.imagePath + " is not a readable PNG/JPEG" +
+                     (decoderSaid.empty() ? "" : " (" + decoderSaid + ")"));
+  }
   if (s.imageWidth > 0 && (s.imageWidth != loaded.image.cols || s.imageHeight != loaded.image.rows)) {
     return makeError(path.string() + ": image_size " + std::to_string(s.imageWidth) + "x" + std::to_string(s.imageHeight) +
                      " does not match the image " + s.imagePath + ", which is " + std::to_string(loaded.image.cols) + "x" +

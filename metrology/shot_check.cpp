@@ -1,5 +1,6 @@
 #include "metrology/shot_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -11,15 +12,22 @@ bool finite(const glm::dvec2& p) { return std::isfinite(p.x) && std::isfinite(p.
 
 double cross(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
 
+// "far wall" rather than the file name "far_wall".
+std::string spokenName(int plane) {
+  std::string name = planeName(static_cast<Plane>(plane));
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name;
+}
+
 std::string quadName(int plane) {
   const auto& q = kPlaneCorners[plane];
-  return std::string(planeName(static_cast<Plane>(plane))) + " quad " + cornerName(q[0]) + "-" + cornerName(q[1]) + "-" +
+  return spokenName(plane) + " quad " + cornerName(q[0]) + "-" + cornerName(q[1]) + "-" +
          cornerName(q[2]) + "-" + cornerName(q[3]);
 }
 
 Status checkQuad(const Shot& shot, int plane) {
   const auto& q = kPlaneCorners[plane];
-  const std::string name(planeName(static_cast<Plane>(plane)));
+  const std::string name = spokenName(plane);
   for (int i = 0; i < 4; ++i) {
     for (int j = i + 1; j < 4; ++j) {
       if (glm::length(shot.cornersPx[q[i]] - shot.cornersPx[q[j]]) < 0.5) {

@@ -1,0 +1,186 @@
+#!/usr/bin/env python3
+"""End-to-end checks of `photowalk measure` and `photowalk rectify`.
+
+usage: cli_test.py PHOTOWALK
+Uses the sample shot in assets/ (a POV-Ray corridor: 4.0 x 3.5 x 19.0 m). Good runs
+must print finite JSON and write complete files; every bad input must exit 1 with
+exactly one line, starting "error:", on stderr, nothing on stdout, and no file left.
+"""
+import json, math, os, shutil, struct, subprocess, sys, tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ASSETS = os.path.normpath(os.path.join(HERE, "..", "..", "assets"))
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def run(exe, *args):
+    return subprocess.run([exe] + list(args), capture_output=True, text=True, timeout=120)
+
+
+def finite_everywhere(value):
+    if isinstance(value, float):
+        return math.isfinite(value)
+    if isinstance(value, dict):
+        return all(finite_everywhere(v) for v in value.values())
+    if isinstance(value, list):
+        return all(finite_everywhere(v) for v in value)
+    return value is not None
+
+
+def png_size(path):
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if head[:8] != b"\x89PNG\r\n\x1a\n":
+        return None
+    return struct.unpack(">II", head[16:24])
+
+
+def no_temp_files(folder):
+    return not any(".tmp" in name for name in os.listdir(folder))
+
+
+def main():
+    exe = os.path.abspath(sys.argv[1])
+    base = json.load(open(os.path.join(ASSETS, "corridor.json")))
+    base["image"] = os.path.join(ASSETS, base["image"])
+    tmp = tempfile.mkdtemp(prefix="pw_cli_test_")
+    try:
+        good = os.path.join(tmp, "good.json")
+        json.dump(base, open(good, "w"))
+
+        # measure: both methods, the figures, no NaN, the documented keys.
+        for method in ("general", "seed"):
+            r = run(exe, "measure", good, "--method", method)
+            check(r.returncode == 0, "measure --method %s exits 0 (%s)" % (method, r.stderr.strip()))
+            if r.returncode != 0:
+                continue
+            doc = json.loads(r.stdout)
+            check(finite_everywhere(doc), "measure --method %s prints only finite numbers" % method)
+            for key in ("width_m", "height_m", "length_m", "sigma_m", "vanishing_point_px", "camera",
+                        "reprojection_rms_px", "corners_m"):
+                check(key in doc, "measure prints %s" % key)
+            for key in ("height_m", "focal_px", "yaw_deg", "pitch_deg", "roll_deg", "position_m", "world_from_camera"):
+                check(key in doc.get("camera", {}), "measure prints camera.%s" % key)
+            for key, truth in (("width_m", 4.0), ("height_m", 3.5), ("length_m", 19.0)):
+                check(abs(doc[key] / truth - 1) < 0.003, "%s %s within 0.3%% (got %s)" % (method, key, doc[key]))
+                check(0 < doc["sigma_m"][key] < 0.05 * truth, "%s sigma of %s is plausible" % (method, key))
+
+        # --sheet writes a PNG at least the photo's size.
+        sheet = os.path.join(tmp, "sheet.png")
+        r = run(exe, "measure", good, "--sheet", sheet)
+        check(r.returncode == 0 and png_size(sheet) is not None, "measure --sheet writes a PNG")
+        if png_size(sheet):
+            w, h = png_size(sheet)
+            check(w >= 1280 and h > 720, "the sheet is at least the photo's size (%dx%d)" % (w, h))
+        check(no_temp_files(tmp), "measure --sheet leaves no temporary file")
+
+        # rectify: five textures and planes.json that agree with each other.
+        out = os.path.join(tmp, "planes")
+        r = run(exe, "rectify", good, "-o", out)
+        check(r.returncode == 0, "rectify exits 0 (%s)" % r.stderr.strip())
+        if r.returncode == 0:
+            planes = json.load(open(os.path.join(out, "planes.json")))
+            check(finite_everywhere(planes), "planes.json holds only finite numbers")
+            for name in ("far_wall", "left_wall", "right_wall", "floor", "ceiling"):
+                p = planes["planes"][name]
+                size = png_size(os.path.join(out, name + ".png"))
+                check(size == (p["width_px"], p["height_px"]), "%s.png is %s as planes.json says" % (name, size))
+                aspect = p["width_m"] / p["height_m"]
+                check(abs(size[0] / size[1] / aspect - 1) < 0.02, "%s.png has the true aspect ratio" % name)
+                check(max(size) <= 4096, "%s.png is capped at 4096 px" % name)
+            check(abs(planes["planes"]["floor"]["height_m"] - 19.0) < 0.06, "the floor is as long as the corridor")
+            check(no_temp_files(out), "rectify leaves no temporary file")
+        r = run(exe, "rectify", good, "-o", os.path.join(tmp, "small"), "--max-side", "256", "--px-per-m", "1000")
+        check(r.returncode == 0, "rectify --max-side --px-per-m exits 0")
+        if r.returncode == 0:
+            check(png_size(os.path.join(tmp, "small", "floor.png"))[1] == 256, "--max-side caps the floor at 256 px")
+
+        # Bad input: one line on stderr, exit 1, nothing on stdout.
+        def shot_with(name, change):
+            doc = json.loads(json.dumps(base))
+            change(doc)
+            path = os.path.join(tmp, name + ".json")
+            json.dump(doc, open(path, "w"))
+            return path
+
+        def swap(a, b):
+            def change(doc):
+                c = doc["corners_px"]
+                c[a], c[b] = c[b], c[a]
+            return change
+
+        def swap_near_far(doc):
+            c = doc["corners_px"]
+            for a, b in (("P1", "P7"), ("P2", "P8"), ("P3", "P5"), ("P4", "P6")):
+                c[a], c[b] = c[b], c[a]
+
+        def collinear(doc):
+            c = doc["corners_px"]
+            c["P2"] = [c["P1"][0] + 0.5 * (c["P1"][0] - c["P3"][0]), c["P1"][1] + 0.5 * (c["P1"][1] - c["P3"][1])]
+
+        junk = os.path.join(tmp, "junk.png")
+        open(junk, "wb").write(b"not an image at all")
+        empty = os.path.join(tmp, "empty.png")
+        open(empty, "wb").close()
+        truncated = os.path.join(tmp, "truncated.png")
+        open(truncated, "wb").write(open(base["image"], "rb").read()[:5000])
+        nan_file = os.path.join(tmp, "nan.json")
+        open(nan_file, "w").write(json.dumps(base).replace('"focal_px": 914.014724', '"focal_px": NaN'))
+        huge = os.path.join(tmp, "huge.json")
+        open(huge, "w").write(json.dumps(base).replace('"focal_px": 914.014724', '"focal_px": 1e999'))
+        broken = os.path.join(tmp, "broken.json")
+        open(broken, "w").write('{"image": "x.png", ')
+
+        bad = [
+            ("missing shot file", ["measure", os.path.join(tmp, "nothere.json")], "no such file"),
+            ("corrupt JSON", ["measure", broken], "not valid JSON"),
+            ("NaN in JSON", ["measure", nan_file], "not valid JSON"),
+            ("huge number", ["measure", huge], "number overflow"),
+            ("missing image field", ["measure", shot_with("noimage", lambda d: d.pop("image"))], "image"),
+            ("missing image", ["measure", shot_with("gone", lambda d: d.update(image="gone.png"))], "does not exist"),
+            ("junk image", ["measure", shot_with("junk", lambda d: d.update(image=junk))], "not a readable"),
+            ("empty image", ["measure", shot_with("empty", lambda d: d.update(image=empty))], "is empty"),
+            ("truncated image", ["measure", shot_with("trunc", lambda d: d.update(image=truncated))], "not a readable"),
+            ("non-numeric focal", ["measure", shot_with("f", lambda d: d.update(focal_px="long"))], "must be a number"),
+            ("zero focal", ["measure", shot_with("f0", lambda d: d.update(focal_px=0))], "positive"),
+            ("negative height", ["measure", shot_with("h", lambda d: d.update(camera_height_m=-1.7))], "positive"),
+            ("no scale", ["measure", shot_with("ns", lambda d: d.pop("camera_height_m"))], "scale is unknown"),
+            ("missing corner", ["measure", shot_with("p8", lambda d: d["corners_px"].pop("P8"))], "P8"),
+            ("corner far outside", ["measure", shot_with("far", lambda d: d["corners_px"].update(P6=[9000, 10]))],
+             "outside"),
+            ("crossed far wall", ["measure", shot_with("crossed", swap("P1", "P2"))], "crosses itself"),
+            ("collinear corners", ["measure", shot_with("collinear", collinear)], "collinear"),
+            ("near and far swapped", ["measure", shot_with("swapped", swap_near_far)], "P"),
+            ("bad method", ["measure", good, "--method", "magic"], "general or seed"),
+            ("negative sigma", ["measure", good, "--sigma-px", "-1"], "sigma"),
+            ("unknown option", ["measure", good, "--frobnicate"], "unknown option"),
+            ("two shots", ["measure", good, good], "one shot file"),
+            ("sheet into a missing folder", ["measure", good, "--sheet", os.path.join(tmp, "no", "s.png")],
+             "does not exist"),
+            ("rectify without -o", ["rectify", good], "-o"),
+            ("rectify bad max side", ["rectify", good, "-o", os.path.join(tmp, "x"), "--max-side", "0"], "max-side"),
+            ("rectify crossed", ["rectify", shot_with("crossed2", swap("P5", "P6")), "-o", os.path.join(tmp, "y")],
+             "crosses itself"),
+        ]
+        for what, args, needle in bad:
+            r = run(exe, *args)
+            lines = r.stderr.strip().splitlines()
+            check(r.returncode == 1, "%s: exit 1 (got %d)" % (what, r.returncode))
+            check(len(lines) == 1 and lines[0].startswith("error: "), "%s: one error line (got %r)" % (what, r.stderr))
+            check(needle in r.stderr, "%s: the error mentions %r (got %r)" % (what, needle, r.stderr.strip()))
+            check(r.stdout == "", "%s: nothing on stdout" % what)
+        check(not os.path.exists(os.path.join(tmp, "y", "floor.png")), "a failed rectify writes no texture")
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    print("%d failures" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,102 @@
+// Shot files: what is read, and one-line errors for what is wrong in them.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "editor/shot_file.h"
+
+namespace pw::editor {
+namespace {
+namespace fs = std::filesystem;
+
+class ShotFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("pw_shot_file_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    cv::imwrite((dir_ / "photo.png").string(), cv::Mat(60, 80, CV_8UC3, cv::Scalar(10, 20, 30)));
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  static std::string shot(const std::string& extra = "", const std::string& focal = "\"focal_px\": 70") {
+    return "{\"image\": \"photo.png\", " + focal +
+           ", \"camera_height_m\": 1.5, \"corners_px\": {\"P1\": [30, 20], \"P2\": [50, 20], \"P3\": [30, 40], "
+           "\"P4\": [50, 40], \"P5\": [10, 55], \"P6\": [70, 55], \"P7\": [10, 5], \"P8\": [70, 5]}" +
+           extra + "}";
+  }
+  // `text` with the first `from` replaced by `to`.
+  static std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? text : text.replace(at, from.size(), to);
+  }
+  void expectError(const std::string& text, const std::string& needle) {
+    auto loaded = loadShot(write("bad.json", text));
+    ASSERT_FALSE(loaded.ok()) << text;
+    EXPECT_NE(loaded.message().find(needle), std::string::npos) << loaded.message() << "\n" << text;
+    EXPECT_EQ(loaded.message().find('\n'), std::string::npos);
+  }
+  fs::path dir_;
+};
+
+TEST_F(ShotFile, ReadsAGoodShot) {
+  auto loaded = loadShot(write("good.json", shot(", \"reference\": {\"from\": \"P3\", \"to\": \"P4\", \"length_m\": 2}, \"extra\": 1")));
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  EXPECT_EQ(loaded->shot.imageWidth, 80);
+  EXPECT_EQ(loaded->shot.imageHeight, 60);
+  EXPECT_DOUBLE_EQ(loaded->shot.focalPx, 70);
+  EXPECT_DOUBLE_EQ(loaded->shot.cornersPx[metrology::P6].x, 70);
+  ASSERT_TRUE(loaded->shot.reference.has_value());
+  EXPECT_EQ(loaded->shot.reference->to, metrology::P4);
+  EXPECT_DOUBLE_EQ(loaded->shot.principalPoint().x, 39.5);
+}
+
+TEST_F(ShotFile, FocalFromMillimetres) {
+  auto loaded = loadShot(write("mm.json", shot("", "\"focal_mm\": 4, \"sensor_width_mm\": 8")));
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  EXPECT_DOUBLE_EQ(loaded->shot.focalPx, 40);
+}
+
+TEST_F(ShotFile, ErrorsNameTheProblem) {
+  expectError("{\"image\": ", "not valid JSON");
+  expectError("[1, 2]", "JSON object");
+  expectError(replaced(shot(), "photo.png", "nothere.png"), "does not exist");
+  expectError(shot("", "\"focal_px\": \"wide\""), "must be a number");
+  expectError(shot("", "\"focal_px\": 0"), "focal_px must be positive");
+  expectError(shot("", "\"focal_px\": 1e999"), "number overflow");
+  expectError(shot("", "\"focal_mm\": 4"), "sensor_width_mm");
+  expectError(replaced(shot(), "\"P8\": [70, 5]", "\"P8\": [70, \"x\"]"), "corner P8");
+  expectError(replaced(shot(), ", \"P8\": [70, 5]", ""), "no P8");
+  expectError(shot(", \"reference\": {\"from\": 3, \"to\": \"P4\", \"length_m\": 2}"), "two different corners");
+  expectError(shot(", \"image_size\": [800, 600]"), "does not match");
+  expectError(replaced(shot(), "\"P6\": [70, 55]", "\"P6\": [700, 55]"), "far outside");
+}
+
+TEST_F(ShotFile, BrokenImagesAreErrors) {
+  std::ofstream(dir_ / "empty.png").close();
+  std::ofstream(dir_ / "junk.png") << "this is not a png";
+  expectError(replaced(shot(), "photo.png", "empty.png"), "is empty");
+  expectError(replaced(shot(), "photo.png", "junk.png"), "not a readable");
+}
+
+TEST_F(ShotFile, WriteThenReadGivesTheSameShot) {
+  auto loaded = loadShot(write("good.json", shot()));
+  ASSERT_TRUE(loaded.ok());
+  ASSERT_TRUE(writeShotFile(dir_ / "copy.json", loaded->shot).ok());
+  auto again = loadShot(dir_ / "copy.json");
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ(again->shot.imagePath, loaded->shot.imagePath);
+  for (int i = 0; i < metrology::kCornerCount; ++i) EXPECT_EQ(again->shot.cornersPx[i], loaded->shot.cornersPx[i]);
+}
+
+}  // namespace
+}  // namespace pw::editor
