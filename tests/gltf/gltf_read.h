@@ -38,7 +38,8 @@ std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor);
 std::vector<glm::vec4> readVec4(const tinygltf::Model& model, int accessor);
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int accessor);
 
-// Where the tests write their files (the validator ctest checks them all).
+// Where the tests write their files: PW_BINARY_DIR/tests/gltf/out, or $PW_GLTF_TEST_OUT
+// (the validator ctest re-runs the tests into its own folder and checks every file).
 std::filesystem::path outputDir();
 
 }  // namespace pw::engine::testing
