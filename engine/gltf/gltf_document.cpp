@@ -105,7 +105,18 @@ Status DocumentBuilder::addShape(size_t shapeIndex) {
 
   Json node = Json::object();
   const Mesh* mesh = shape.mesh.get();
-  if (const std::optional<Trs> trs = decomposeTrs(shape.transform)) {
+  glm::mat4 transform = shape.transform;
+  // glTF lets a negative determinant flip the winding (glTF 2.0, 3.7.4), but viewers
+  // get it wrong (view3dscene 4.2 draws such shapes inside out), so a mirroring
+  // transform is written as a positive one over a mirrored copy of the mesh, made once
+  // per mesh and shared by all its mirrored uses: T p = (T S) (S p), S = diag(-1, 1, 1).
+  if (glm::determinant(glm::mat3(transform)) < 0.0f) {
+    std::unique_ptr<Mesh>& mirrored = mirroredMeshes_[mesh];
+    if (!mirrored) mirrored = std::make_unique<Mesh>(mirroredInX(*mesh));
+    mesh = mirrored.get();
+    transform[0] = -transform[0];
+  }
+  if (const std::optional<Trs> trs = decomposeTrs(transform)) {
     if (trs->translation != glm::vec3(0.0f)) node["translation"] = floats(trs->translation);
     if (!isIdentity(trs->rotation)) node["rotation"] = rotationJson(trs->rotation);
     if (trs->scale != glm::vec3(1.0f)) node["scale"] = floats(trs->scale);

@@ -31,6 +31,11 @@ inline constexpr int kTargetElementArrayBuffer = 34963;
 // singular and the mesh is made of triangles: the shape has no area to draw.
 std::optional<Mesh> bakeTransform(const Mesh& mesh, const glm::mat4& transform);
 
+// `mesh` reflected in its local x = 0 plane, with the triangle winding reversed so
+// that front faces stay front faces. A shape whose transform mirrors (negative
+// determinant) is written as this mesh under the transform times that reflection.
+Mesh mirroredInX(const Mesh& mesh);
+
 class DocumentBuilder {
  public:
   explicit DocumentBuilder(const Scene& scene) : scene_(scene) {}
@@ -93,6 +98,7 @@ class DocumentBuilder {
   std::map<const Image*, bool> imageAlpha_;
   std::vector<ImageSlot> pendingImages_;
   std::vector<std::unique_ptr<Mesh>> bakedMeshes_;  // shapes whose transform has shear
+  std::map<const Mesh*, std::unique_ptr<Mesh>> mirroredMeshes_;  // one per mesh drawn mirrored
   std::vector<int> rootNodes_;
 };
 

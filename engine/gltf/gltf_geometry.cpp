@@ -182,6 +182,18 @@ Result<int> DocumentBuilder::meshFor(const Mesh& mesh, const Appearance* appeara
 }
 
 
+Mesh mirroredInX(const Mesh& mesh) {
+  Mesh mirrored = mesh;
+  for (glm::vec3& p : mirrored.positions) p.x = -p.x;
+  for (glm::vec3& n : mirrored.normals) n.x = -n.x;
+  if (mirrored.topology == Topology::kTriangles) {
+    for (size_t i = 0; i + 2 < mirrored.indices.size(); i += 3) {
+      std::swap(mirrored.indices[i + 1], mirrored.indices[i + 2]);
+    }
+  }
+  return mirrored;
+}
+
 std::optional<Mesh> bakeTransform(const Mesh& mesh, const glm::mat4& transform) {
   const glm::mat3 linear(transform);
   const float det = glm::determinant(linear);

@@ -3,7 +3,9 @@
 // What maps to what (the approximations are documented in gltf_mapping.h/.cpp):
 //   Shape            -> node (translation/rotation/scale) + mesh. A transform with
 //                       shear is not expressible as a glTF node, so such a shape's
-//                       mesh is written already transformed (not shared).
+//                       mesh is written already transformed (not shared). A mirroring
+//                       transform becomes a positive one over a mirrored copy of the
+//                       mesh (one per mesh), since viewers mishandle negative scales.
 //   shared Mesh      -> one set of accessors; one glTF mesh per (Mesh, material).
 //   Appearance       -> material, shared between shapes with equal content:
 //                       no Material: KHR_materials_unlit (VRML97 4.14.3: unlit);

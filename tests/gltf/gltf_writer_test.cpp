@@ -406,11 +406,45 @@ TEST(GltfWriter, FieldOfViewOutsideZeroToPiIsAnError) {
   EXPECT_NE(bytes.message().find("viewpoint 'Side'"), std::string::npos) << bytes.message();
 }
 
-TEST(GltfWriter, MirroredShapeKeepsItsMirror) {
+TEST(GltfWriter, MirroredShapesShareAMirroredMeshUnderPositiveTransforms) {
   Scene scene = samples::litBox();
-  scene.shapes[0].transform = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1));
+  const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1));
+  scene.shapes.push_back(scene.shapes[0]);
+  scene.shapes.back().transform = glm::translate(glm::mat4(1.0f), glm::vec3(3, 0, 0)) * mirror;
+  scene.shapes.back().name = "mirrored_a";
+  scene.shapes.push_back(scene.shapes[0]);
+  scene.shapes.back().transform =
+      glm::translate(glm::mat4(1.0f), glm::vec3(-3, 0, 0)) * glm::rotate(glm::mat4(1.0f), 0.5f, glm::vec3(0, 1, 0)) *
+      glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -2));
+  scene.shapes.back().name = "mirrored_b";
   const tinygltf::Model model = writeAndRead(scene, "mirrored");
-  EXPECT_LT(glm::determinant(glm::mat3(nodeMatrix(model.nodes[0]))), 0.0f);
+  const tinygltf::Node& plain = nodeNamed(model, "box");
+  const tinygltf::Node& a = nodeNamed(model, "mirrored_a");
+  const tinygltf::Node& b = nodeNamed(model, "mirrored_b");
+  EXPECT_EQ(a.mesh, b.mesh);      // one mirrored copy, shared
+  EXPECT_NE(a.mesh, plain.mesh);  // and not the original
+  const Mesh& original = *scene.shapes[0].mesh;
+  for (size_t shapeIndex : {size_t{1}, size_t{2}}) {
+    const tinygltf::Node& node = model.nodes.at(shapeIndex);
+    const glm::mat4 placed = nodeMatrix(node);
+    EXPECT_GT(glm::determinant(glm::mat3(placed)), 0.0f);  // viewers need not flip the winding
+    const tinygltf::Primitive& primitive = onlyPrimitive(model, node.mesh);
+    const std::vector<glm::vec3> positions = testing::readVec3(model, attribute(primitive, "POSITION"));
+    const std::vector<uint32_t> indices = testing::readIndices(model, primitive.indices);
+    ASSERT_EQ(positions.size(), original.positions.size());
+    std::vector<glm::vec3> world(positions.size());
+    for (size_t i = 0; i < positions.size(); ++i) {
+      world[i] = glm::vec3(placed * glm::vec4(positions[i], 1.0f));
+      const glm::vec3 expected(scene.shapes[shapeIndex].transform * glm::vec4(original.positions[i], 1.0f));
+      EXPECT_NEAR(glm::length(world[i] - expected), 0.0f, 1e-5f) << node.name << " vertex " << i;
+    }
+    // Front faces still face out of the box: the winding survived the mirror.
+    const glm::vec3 centre(scene.shapes[shapeIndex].transform * glm::vec4(0, 0, 0, 1));
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const glm::vec3 p0 = world[indices[t]], p1 = world[indices[t + 1]], p2 = world[indices[t + 2]];
+      EXPECT_GT(glm::dot(glm::cross(p1 - p0, p2 - p0), (p0 + p1 + p2) / 3.0f - centre), 0.0f) << node.name << " " << t;
+    }
+  }
 }
 
 TEST(GltfWriter, ShapesWithoutGeometryAreLeftOut) {
