@@ -117,6 +117,12 @@ Result<RectifiedPlane> rectifyWith(Pyramid& pyramid, const std::array<glm::dvec2
   const int widthPx = std::clamp(static_cast<int>(std::lround(widthM * pxPerM)), 1, options.maxSidePx);
   const int heightPx = std::clamp(static_cast<int>(std::lround(heightM * pxPerM)), 1, options.maxSidePx);
 
+  // 2^28 texels (768 MiB of BGR) is far beyond any photo's detail; refuse rather
+  // than fail to allocate.
+  if (static_cast<double>(widthPx) * heightPx > static_cast<double>(1 << 28)) {
+    return makeError("the texture would be " + std::to_string(widthPx) + "x" + std::to_string(heightPx) +
+                     " px; lower the px per metre or the size cap");
+  }
   RectifiedPlane out;
   out.widthM = widthM;
   out.heightM = heightM;

@@ -47,8 +47,13 @@ void dashedLine(cv::Mat& canvas, const glm::dvec2& a, const glm::dvec2& b, const
   for (double t = 0; t < length; t += 2 * dashPx) line(canvas, a + d * t, a + d * std::min(length, t + dashPx), colour, width);
 }
 
-// Text with a dark outline, so that it reads on light and dark ground alike.
+// Text with a dark outline, so that it reads on light and dark ground alike; moved
+// inside the canvas where it would stick out.
 void outlinedText(cv::Mat& canvas, const std::string& text, cv::Point origin, const Style& s, const cv::Scalar& colour) {
+  int baseline = 0;
+  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, s.fontScale, s.thickness + 3, &baseline);
+  origin.x = std::clamp(origin.x, 2, std::max(2, canvas.cols - size.width - 2));
+  origin.y = std::clamp(origin.y, size.height + 2, std::max(size.height + 2, canvas.rows - baseline - 2));
   cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, s.fontScale, kShadow, s.thickness + 3, cv::LINE_AA);
   cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, s.fontScale, colour, s.thickness, cv::LINE_AA);
 }
@@ -108,6 +113,9 @@ void edgeLabel(cv::Mat& canvas, const std::string& text, const glm::dvec2& a, co
   const double offset = 0.5 * (size.height + baseline) + std::max(3, size.height / 3) + s.lineWidth + 2;
   rotatedLabel(canvas, text, mid + n * offset, glm::degrees(std::atan2(d.y, d.x)), s, colour);
 }
+
+// Rounds what would print as -0.00 to 0.
+double tidy(double v) { return std::abs(v) < 0.005 ? 0.0 : v; }
 
 std::string dimensionText(const char* name, double valueM, double sigmaM) {
   char text[96];
@@ -221,7 +229,7 @@ Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, con
   std::snprintf(lines[1], sizeof lines[1], "W %.3f +/- %.3f   H %.3f +/- %.3f   L %.3f +/- %.3f m", m.size.widthM,
                 m.sigma.widthM, m.size.heightM, m.sigma.heightM, m.size.lengthM, m.sigma.lengthM);
   std::snprintf(lines[2], sizeof lines[2], "camera f %.1f px  h %.3f m  yaw %.2f  pitch %.2f  roll %.2f deg", m.camera.focalPx,
-                m.cameraHeightM, m.pose.yawDeg, m.pose.pitchDeg, m.pose.rollDeg);
+                m.cameraHeightM, tidy(m.pose.yawDeg), tidy(m.pose.pitchDeg), tidy(m.pose.rollDeg));
   std::snprintf(lines[3], sizeof lines[3], "reprojection RMS %.2f px   VP (%.1f, %.1f)   o clicked  + fitted",
                 m.reprojectionRmsPx, vp.x, vp.y);
   int baseline = 0;
