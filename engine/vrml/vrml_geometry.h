@@ -1,0 +1,41 @@
+// VRML97 geometry nodes to scene meshes (ISO/IEC 14772-1, 6.4 Box, 6.10 Cone, 6.12
+// Cylinder, 6.17 ElevationGrid, 6.23 IndexedFaceSet, 6.24 IndexedLineSet, 6.36
+// PointSet, 6.44 Sphere), in the node's local space, with the standard's texture
+// coordinate layouts.
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "base/result.h"
+#include "engine/scene/scene.h"
+#include "engine/vrml/diagnostics.h"
+#include "engine/vrml/vrml_node.h"
+
+namespace pw::engine::vrml {
+
+// Turns a possibly-PROTO node into the built-in node it stands for (or null).
+using NodeResolver = std::function<Result<NodePtr>(const NodePtr&)>;
+
+struct GeometryOptions {
+  bool texCoords = false;  // the shape is textured: make texture coordinates
+};
+
+// The mesh of a geometry node, or nullopt when it draws nothing (a diagnostic says
+// why: no coordinates, an unsupported node such as Text...).
+Result<std::optional<Mesh>> buildGeometry(const Node& node, const NodeResolver& resolve, const GeometryOptions& options,
+                                          Diagnostics* diagnostics);
+
+// Primitives, exposed for tests. Slices around the axis; stacks along it (sphere).
+Mesh makeBox(const glm::vec3& size, bool texCoords);
+Mesh makeSphere(float radius, bool texCoords, int slices = 48, int stacks = 24);
+Mesh makeCylinder(float radius, float height, bool side, bool top, bool bottom, bool texCoords, int slices = 48);
+Mesh makeCone(float bottomRadius, float height, bool side, bool bottom, bool texCoords, int slices = 48);
+
+// IndexedFaceSet, ElevationGrid (vrml_face_set.cpp).
+Result<std::optional<Mesh>> buildIndexedFaceSet(const Node& node, const NodeResolver& resolve,
+                                                const GeometryOptions& options, Diagnostics* diagnostics);
+Result<std::optional<Mesh>> buildElevationGrid(const Node& node, const NodeResolver& resolve,
+                                               const GeometryOptions& options, Diagnostics* diagnostics);
+
+}  // namespace pw::engine::vrml

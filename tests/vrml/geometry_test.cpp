@@ -1,0 +1,234 @@
+#include "engine/vrml/vrml_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/vrml/polygon_mesh.h"
+#include "engine/vrml/vrml_reader.h"
+
+namespace pw::engine::vrml {
+namespace {
+
+glm::vec3 faceNormal(const Mesh& m, size_t t) {
+  const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+  return glm::cross(b - a, c - a);
+}
+
+// Every non-degenerate triangle winds counter-clockwise seen from the side its vertex
+// normals point to.
+void expectOutwardWinding(const Mesh& m) {
+  ASSERT_EQ(m.indices.size() % 3, 0u);
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const glm::vec3 n = faceNormal(m, t);
+    if (glm::length(n) < 1e-6f) continue;
+    const glm::vec3 vn = m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] + m.normals[m.indices[t + 2]];
+    EXPECT_GT(glm::dot(n, vn), 0.0f) << "triangle " << t / 3;
+  }
+}
+
+Scene read(const std::string& body, Diagnostics* d = nullptr) {
+  auto scene = engine::readVrmlString("#VRML V2.0 utf8\n" + body, PW_TEST_DATA_DIR "/vrml", d);
+  EXPECT_TRUE(scene.ok()) << scene.message();
+  return scene.ok() ? std::move(*scene) : Scene{};
+}
+
+TEST(VrmlPrimitives, BoxFacesPointOutAndShowTheImageUpright) {
+  const Mesh box = makeBox({2, 4, 6}, true);
+  EXPECT_EQ(box.positions.size(), 24u);
+  EXPECT_EQ(box.indices.size(), 36u);
+  expectOutwardWinding(box);
+  EXPECT_EQ(localBounds(box).max, glm::vec3(1, 2, 3));
+  // Front face: bottom-left corner at texture (0, 0); top face: its -Z edge is the image top.
+  for (size_t i = 0; i < box.positions.size(); ++i) {
+    const glm::vec3 p = box.positions[i], n = box.normals[i];
+    if (n == glm::vec3(0, 0, 1) && p.x < 0 && p.y < 0) {
+      EXPECT_EQ(box.texCoords[i], glm::vec2(0, 0));
+    }
+    if (n == glm::vec3(0, 1, 0) && p.x < 0 && p.z < 0) {
+      EXPECT_EQ(box.texCoords[i], glm::vec2(0, 1));
+    }
+    if (n == glm::vec3(0, 0, -1) && p.x > 0 && p.y < 0) {
+      EXPECT_EQ(box.texCoords[i], glm::vec2(0, 0));
+    }
+  }
+}
+
+TEST(VrmlPrimitives, SphereWrapsTheTextureFromTheBack) {
+  const Mesh s = makeSphere(2.0f, true);
+  expectOutwardWinding(s);
+  for (size_t i = 0; i < s.positions.size(); ++i) {
+    EXPECT_NEAR(glm::length(s.positions[i]), 2.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(s.normals[i], s.positions[i] / 2.0f), 1.0f, 1e-5f);
+    const glm::vec2 t = s.texCoords[i];
+    // s = 0.5 faces +Z (the default viewer), s = 0.25 faces -X; t = 1 at the top.
+    if (std::fabs(t.y - 0.5f) < 1e-6f && std::fabs(t.x - 0.5f) < 1e-6f) {
+      EXPECT_NEAR(s.positions[i].z, 2.0f, 1e-5f);
+    }
+    if (std::fabs(t.y - 0.5f) < 1e-6f && std::fabs(t.x - 0.25f) < 1e-6f) {
+      EXPECT_NEAR(s.positions[i].x, -2.0f, 1e-5f);
+    }
+    if (t.y == 1.0f) {
+      EXPECT_NEAR(s.positions[i].y, 2.0f, 1e-5f);
+    }
+  }
+}
+
+TEST(VrmlPrimitives, CylinderAndConePartsCanBeLeftOut) {
+  const Mesh all = makeCylinder(1, 2, true, true, true, false, 16);
+  const Mesh sideOnly = makeCylinder(1, 2, true, false, false, false, 16);
+  expectOutwardWinding(all);
+  EXPECT_EQ(all.indices.size(), 3u * (32 + 16 + 16));
+  EXPECT_EQ(sideOnly.indices.size(), 3u * 32);
+  const Mesh cone = makeCone(1, 2, true, true, false, 16);
+  expectOutwardWinding(cone);
+  EXPECT_EQ(localBounds(cone).max.y, 1.0f);
+  EXPECT_EQ(makeCone(1, 2, false, true, false, 16).indices.size(), 3u * 16);
+  // The side normal of a cone with height 2 and radius 1 leans up by atan(1/2).
+  EXPECT_NEAR(cone.normals[0].y, 1.0f / std::sqrt(5.0f), 1e-5f);
+}
+
+double absoluteArea(const Mesh& m) {
+  double area = 0;
+  for (size_t t = 0; t < m.indices.size(); t += 3) area += 0.5 * glm::length(faceNormal(m, t));
+  return area;
+}
+
+TEST(VrmlFaceSet, NonConvexPolygonIsEarClipped) {
+  auto scene = engine::readVrml(PW_TEST_DATA_DIR "/vrml/nonconvex.wrl", nullptr);
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  const Mesh& m = *scene->shapes.at(0).mesh;
+  EXPECT_EQ(m.indices.size(), 12u);
+  EXPECT_NEAR(absoluteArea(m), 3.0, 1e-6);
+  for (size_t t = 0; t < m.indices.size(); t += 3) EXPECT_GT(faceNormal(m, t).z, 0.0f);
+}
+
+TEST(VrmlFaceSet, ConvexFlagFansTheSamePolygon) {
+  // The control for the test above: fanned, the L folds over itself.
+  Scene scene = read(R"(Shape { geometry IndexedFaceSet {
+    coord Coordinate { point [ 2 1 0, 1 1 0, 1 2 0, 0 2 0, 0 0 0, 2 0 0 ] } coordIndex [ 0 1 2 3 4 5 ] } })");
+  EXPECT_GT(absoluteArea(*scene.shapes.at(0).mesh), 3.5);
+}
+
+TEST(VrmlFaceSet, TriangulatesAConcaveStar) {
+  std::vector<glm::vec3> star;
+  for (int i = 0; i < 10; ++i) {
+    const float a = static_cast<float>(i) * 0.6283185f, r = i % 2 ? 0.4f : 1.0f;
+    star.push_back({r * std::cos(a), r * std::sin(a), 0});
+  }
+  std::vector<uint32_t> tris;
+  triangulatePolygon(star, tris);
+  ASSERT_EQ(tris.size(), 24u);
+  double area = 0;
+  for (size_t t = 0; t < tris.size(); t += 3) {
+    const glm::vec3 n = glm::cross(star[tris[t + 1]] - star[tris[t]], star[tris[t + 2]] - star[tris[t]]);
+    EXPECT_GT(n.z, 0.0f);
+    area += 0.5 * n.z;
+  }
+  // Ten triangles (centre, outer, inner) of the star: 10 * 0.5 * 1 * 0.4 * sin(36 deg).
+  EXPECT_NEAR(area, 10 * 0.5 * 0.4 * std::sin(0.6283185), 1e-5);
+}
+
+const char* kCube = R"(Shape { geometry IndexedFaceSet {
+  creaseAngle %s
+  coord Coordinate { point [ -1 -1 1, 1 -1 1, 1 1 1, -1 1 1, -1 -1 -1, 1 -1 -1, 1 1 -1, -1 1 -1 ] }
+  coordIndex [ 0 1 2 3 -1, 5 4 7 6 -1, 1 5 6 2 -1, 4 0 3 7 -1, 3 2 6 7 -1, 4 5 1 0 -1 ] } })";
+
+std::string cube(const char* crease) {
+  char buffer[1024];
+  std::snprintf(buffer, sizeof buffer, kCube, crease);
+  return buffer;
+}
+
+TEST(VrmlFaceSet, CreaseAngleSplitsOrSmoothsNormals) {
+  const Scene flat = read(cube("0"));
+  const Mesh& f = *flat.shapes.at(0).mesh;
+  EXPECT_EQ(f.positions.size(), 24u);
+  expectOutwardWinding(f);
+  for (const glm::vec3& n : f.normals) EXPECT_NEAR(std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z), 1.0f, 1e-6f);
+  const Scene smooth = read(cube("1.6"));  // above 90 degrees: every cube edge is smoothed
+  const Mesh& s = *smooth.shapes.at(0).mesh;
+  EXPECT_EQ(s.positions.size(), 8u);
+  for (size_t i = 0; i < s.positions.size(); ++i) {
+    EXPECT_NEAR(glm::dot(s.normals[i], glm::normalize(s.positions[i])), 1.0f, 1e-5f);
+  }
+  const Scene justBelow = read(cube("1.5"));  // below 90 degrees: still flat
+  EXPECT_EQ(justBelow.shapes.at(0).mesh->positions.size(), 24u);
+}
+
+TEST(VrmlFaceSet, ClockwiseFacesAreTurnedAround) {
+  const Scene s = read(R"(Shape { geometry IndexedFaceSet { ccw FALSE
+    coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] } coordIndex [ 0 1 2 ] } })");
+  const Mesh& m = *s.shapes.at(0).mesh;
+  // Listed counter-clockwise seen from +Z, but ccw FALSE says the front is -Z.
+  EXPECT_LT(faceNormal(m, 0).z, 0.0f);
+  EXPECT_NEAR(m.normals[0].z, -1.0f, 1e-6f);
+}
+
+TEST(VrmlFaceSet, PerFaceColoursAndNormalsWithIndices) {
+  const Scene s = read(R"(Shape { geometry IndexedFaceSet {
+    colorPerVertex FALSE normalPerVertex FALSE
+    coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0, 2 0 0 ] }
+    color Color { color [ 1 0 0, 0 0 1 ] }
+    colorIndex [ 1 0 ]
+    normal Normal { vector [ 0 0 1, 0 0 2 ] }
+    normalIndex [ 0 1 ]
+    coordIndex [ 0 1 2 3 -1, 1 4 2 -1 ] } })");
+  const Mesh& m = *s.shapes.at(0).mesh;
+  ASSERT_EQ(m.indices.size(), 9u);
+  EXPECT_EQ(m.colors[m.indices[0]], glm::vec4(0, 0, 1, 1));  // face 0 takes colorIndex[0] = 1
+  EXPECT_EQ(m.colors[m.indices[6]], glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(m.normals[m.indices[6]], glm::vec3(0, 0, 1));    // normalised
+  // Points 1 and 2 belong to both faces with different colours: split vertices.
+  EXPECT_EQ(m.positions.size(), 7u);
+}
+
+TEST(VrmlFaceSet, DefaultTextureCoordinatesFollowTheBoundingBox) {
+  const Scene s = read(R"(Shape { appearance Appearance { texture ImageTexture { url "sub/checker.png" } }
+    geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 4 0 0, 4 2 0, 0 2 0 ] } coordIndex [ 0 1 2 3 ] } })");
+  const Mesh& m = *s.shapes.at(0).mesh;
+  ASSERT_EQ(m.texCoords.size(), 4u);
+  EXPECT_EQ(m.texCoords[2], glm::vec2(1.0f, 0.5f));  // s along the longest side, t scaled alike
+}
+
+TEST(VrmlFaceSet, TextureTransformIsBakedIntoTextureCoordinates) {
+  const Scene s = read(R"(Shape { appearance Appearance { texture ImageTexture { url "sub/checker.png" }
+      textureTransform TextureTransform { scale 2 3 translation 0.5 0 } }
+    geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0 ] }
+      texCoord TextureCoordinate { point [ 0 0, 1 0, 1 1 ] } coordIndex [ 0 1 2 ] } })");
+  const Mesh& m = *s.shapes.at(0).mesh;
+  // Tc' = S x T x Tc (center 0, no rotation): translate first, then scale.
+  EXPECT_EQ(m.texCoords[0], glm::vec2(1.0f, 0.0f));
+  EXPECT_EQ(m.texCoords[2], glm::vec2(3.0f, 3.0f));
+}
+
+TEST(VrmlFaceSet, BadIndicesSkipFacesWithAWarning) {
+  Diagnostics d;
+  const Scene s = read(R"(Shape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0 ] }
+    coordIndex [ 0 1 2 -1, 0 1 7 -1, 0 1 -1, -5 ] } })", &d);
+  EXPECT_EQ(s.shapes.at(0).mesh->indices.size(), 3u);
+  EXPECT_NE(d.format().find("3 face(s) of the IndexedFaceSet"), std::string::npos);
+}
+
+TEST(VrmlGeometry, LineSetsAndPointSetsBecomeLinesAndPoints) {
+  const Scene s = read(R"(
+    Shape { geometry IndexedLineSet { coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0 ] } coordIndex [ 0 1 2 -1, 2 0 ] } }
+    Shape { geometry PointSet { coord Coordinate { point [ 0 0 0, 5 5 5 ] } color Color { color [ 1 0 0, 0 1 0 ] } } })");
+  ASSERT_EQ(s.shapes.size(), 2u);
+  EXPECT_EQ(s.shapes[0].mesh->topology, Topology::kLines);
+  EXPECT_EQ(s.shapes[0].mesh->indices.size(), 6u);  // segments 0-1, 1-2, 2-0
+  EXPECT_EQ(s.shapes[1].mesh->topology, Topology::kPoints);
+  EXPECT_EQ(s.shapes[1].mesh->colors[1], glm::vec4(0, 1, 0, 1));
+}
+
+TEST(VrmlGeometry, ElevationGridFacesUp) {
+  const Scene s = read(R"(Shape { geometry ElevationGrid { xDimension 3 zDimension 2 xSpacing 2
+    height [ 0 0 0, 0 1 0 ] } })");
+  const Mesh& m = *s.shapes.at(0).mesh;
+  EXPECT_EQ(m.indices.size(), 12u);
+  for (size_t t = 0; t < m.indices.size(); t += 3) EXPECT_GT(faceNormal(m, t).y, 0.0f);
+  EXPECT_EQ(localBounds(m).max, glm::vec3(4, 1, 1));
+}
+
+}  // namespace
+}  // namespace pw::engine::vrml

@@ -1,0 +1,81 @@
+// Read, write, read again: the same scene, bit for bit (tests/vrml/scene_compare.h).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/vrml/vrml_geometry.h"
+#include "engine/vrml/vrml_reader.h"
+#include "engine/vrml/vrml_writer.h"
+#include "tests/vrml/scene_compare.h"
+#include "tests/vrml/vrml_samples.h"
+
+namespace pw::engine {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path outputDir() {
+  const fs::path dir = fs::path(PW_BINARY_DIR) / "test_output" / "vrml" / "roundtrip";
+  fs::create_directories(dir);
+  return dir;
+}
+
+void expectRoundTrip(const Scene& original, const std::string& name) {
+  const fs::path out = outputDir() / (name + ".wrl");
+  const Status written = writeVrml(original, out);
+  ASSERT_TRUE(written.ok()) << written.message();
+  Diagnostics d;
+  auto back = readVrml(out, &d);
+  ASSERT_TRUE(back.ok()) << back.message();
+  EXPECT_EQ(sceneDifference(original, *back), "") << out;
+  EXPECT_EQ(d.warningCount(), 0) << d.format();
+}
+
+TEST(VrmlRoundTrip, EverySampleReadsBackExactly) {
+  const auto samples = vrmlSamples();
+  if (samples.empty()) GTEST_SKIP() << "no samples in " << PW_SHARED_DIR "/vrml-samples";
+  for (const fs::path& sample : samples) {
+    SCOPED_TRACE(sample.string());
+    auto scene = readVrml(sample, nullptr);
+    ASSERT_TRUE(scene.ok()) << scene.message();
+    expectRoundTrip(*scene, sample.stem().string());
+  }
+}
+
+TEST(VrmlRoundTrip, AwkwardTransformsLightsAndFloats) {
+  Scene s;
+  auto mesh = std::make_shared<Mesh>(vrml::makeSphere(0.1f, false, 8, 4));
+  const glm::mat4 transforms[] = {
+      glm::rotate(glm::mat4(1), 1.5707963f, glm::vec3(0, 1, 0)),
+      glm::rotate(glm::mat4(1), 3.14159265f, glm::vec3(1, 0, 0)),  // half turn
+      glm::rotate(glm::mat4(1), 0.7f, glm::normalize(glm::vec3(1, 2, 3))) * glm::scale(glm::mat4(1), glm::vec3(1, 3, 0.5f)),
+      glm::scale(glm::mat4(1), glm::vec3(-1, 1, 1)),  // mirror
+      glm::translate(glm::mat4(1), glm::vec3(1e-7f, -123456.78f, 0.1f)) * glm::scale(glm::mat4(1), glm::vec3(1e-3f)),
+      glm::rotate(glm::mat4(1), 0.3f, glm::vec3(0, 0, 1)) * glm::scale(glm::mat4(1), glm::vec3(2, 1, 1)) *
+          glm::rotate(glm::mat4(1), -0.9f, glm::vec3(1, 1, 0)),  // a shear
+  };
+  for (const glm::mat4& t : transforms) {
+    Shape shape;
+    shape.mesh = mesh;
+    shape.transform = t;
+    s.shapes.push_back(shape);
+  }
+  Light spot;
+  spot.type = LightType::kSpot;
+  spot.position = {0.3f, 2.0f / 3.0f, -1e10f};
+  spot.direction = {0.1f, -0.99f, 0.0f};
+  spot.attenuation = {1, 0.01f, 0.001f};
+  spot.on = false;
+  s.lights.push_back(spot);
+  s.lights.push_back(Light{});
+  s.backgroundColor = {0.25f, 0.5f, 1.0f / 3.0f};
+  s.navigation.type = {"WALK"};
+  s.navigation.visibilityLimitM = 100;
+  s.info = {"line \\ with \"quotes\"", ""};
+  expectRoundTrip(s, "awkward");
+}
+
+}  // namespace
+}  // namespace pw::engine
