@@ -11,6 +11,7 @@
 #include "editor/command.h"
 #include "editor/shot_file.h"
 #include "metrology/detect/detect.h"
+#include "metrology/detect/overlay.h"
 
 namespace pw::editor {
 namespace {
@@ -20,7 +21,7 @@ using metrology::detect::CorridorDetection;
 
 constexpr const char* kUsage =
     "usage: photowalk detect PHOTO -o SHOT.json [--focal-px F] [--principal-point U,V]\n"
-    "                        [--camera-height H] [--near-at-image-edge]\n\n"
+    "                        [--camera-height H] [--near-at-image-edge] [--overlay OUT.png]\n\n"
     "Finds the corridor in the photo: its vanishing points (the Manhattan frame), the\n"
     "four receding floor and ceiling edges, the far wall's corners P1..P4 and the near\n"
     "corners P5..P8, each refined to sub-pixel precision on the image's edges, and\n"
@@ -34,7 +35,9 @@ constexpr const char* kUsage =
     "  --camera-height H       camera height above the floor, metres (measure needs it,\n"
     "                          or a reference length added in the editor)\n"
     "  --near-at-image-edge    put P5..P8 at the nearest depth where all four stay inside\n"
-    "                          the photo even when a band or frame marks a cross-section\n\n"
+    "                          the photo even when a band or frame marks a cross-section\n"
+    "  --overlay OUT.png       also draw what was found on the photo (corners ringed by\n"
+    "                          confidence: green >= 0.7, amber >= 0.4, red below)\n\n"
     "Exit status: 0 written; 1 bad input (one line on stderr); 2 no corridor found in\n"
     "the photo (nothing is written).\n";
 
@@ -94,6 +97,7 @@ int runDetect(Args& args) {
   const std::optional<std::string> focal = args.value("--focal-px");
   const std::optional<std::string> principal = args.value("--principal-point");
   const std::optional<std::string> height = args.value("--camera-height");
+  const std::optional<std::string> overlayPath = args.value("--overlay");
   metrology::detect::DetectOptions options;
   options.nearAtImageEdge = args.flag("--near-at-image-edge");
   const std::vector<std::string> positionals = args.positionals();
@@ -148,6 +152,20 @@ int runDetect(Args& args) {
   for (int k = 0; k < metrology::kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
   if (Status written = writeDetectedShot(*output, shot, detectionJson(*detection)); !written) {
     return fail(written.message());
+  }
+  if (overlayPath) {
+    const cv::Mat overlay = metrology::detect::drawDetection(photo, *detection);
+    Status drawn = writeViaTempFile(*overlayPath, [&](const fs::path& temp) -> Status {
+      bool ok = false;
+      try {
+        ok = cv::imwrite(temp.string(), overlay);
+      } catch (const cv::Exception&) {
+        ok = false;
+      }
+      if (!ok) return makeError(*overlayPath + ": cannot write the overlay (use a .png or .jpg name)");
+      return {};
+    });
+    if (!drawn) return fail(drawn.message());
   }
   const glm::dvec2 vp = detection->corridor.pixel();
   std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,

@@ -19,6 +19,14 @@ constexpr double kMinSegmentLengthOfDiagonal = 0.02;
 // meeting point of a few unrelated lines.
 constexpr double kMinCorridorConfidence = 0.3;
 constexpr int kMinPhotoSidePx = 32;
+// Inlier segments of a true vanishing point agree with it to a degree or so (the
+// five test corridors: 0.2-1.1); a "point" fitted to unrelated lines does not.
+constexpr double kMaxCorridorRmsAngleDeg = 2.0;
+// A boundary must follow an edge over a quarter of its outer half at least (people
+// or furniture may hide the rest).
+constexpr double kMinBoundaryEdgeCoverage = 0.25;
+// Each far-wall side must be an edge over this share of its middle stretch.
+constexpr double kMinFarSideCoverage = 0.3;
 
 CorridorDetection notFound(CorridorDetection d, const std::string& reason) {
   d.found = false;
@@ -114,6 +122,10 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   if (!(vp.x >= 0 && vp.y >= 0 && vp.x <= size.width - 1 && vp.y <= size.height - 1)) {
     return notFound(d, "the lines meet outside the photo, not at a corridor's end");
   }
+  if (d.corridor.rmsAngleDeg > kMaxCorridorRmsAngleDeg) {
+    return notFound(d, "the receding lines do not meet in one point (rms " +
+                           std::to_string(d.corridor.rmsAngleDeg).substr(0, 4) + " degrees)");
+  }
   if (d.corridor.confidence < kMinCorridorConfidence) {
     return notFound(d, "too few receding lines around the vanishing point (confidence " +
                            std::to_string(d.corridor.confidence).substr(0, 4) + ")");
@@ -124,6 +136,11 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   const glm::dvec2 horizon = directionTowards(d.horizontal.point, vp);
   auto boundaries = findRecedingBoundaries(work, vpWork, std::atan2(horizon.y, horizon.x));
   if (!boundaries) return notFound(d, boundaries.message());
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    if (boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) {
+      return notFound(d, std::string("no edge along the ") + boundaryName(b) + " boundary");
+    }
+  }
   const CrossSectionFamily family(vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), *boundaries);
   auto farWall = findFarWall(work, family);
   if (!farWall) return notFound(d, farWall.message());
@@ -134,6 +151,12 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   Quad coarseFar;
   for (int k = 0; k < 4; ++k) coarseFar[k] = work.toFull(farWall->corners[k]);
   const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx, stepHalfWidthPx);
+  for (int side = 0; side < 4; ++side) {
+    if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
+      static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
+      return notFound(d, std::string("the far wall's ") + kSideNames[side] + " edge is not in the photo");
+    }
+  }
   if (!convexAround(far.corners, vp)) return notFound(d, "the far wall's corners do not surround the vanishing point");
   for (int k = 0; k < 4; ++k) {
     d.corners[k] = {far.corners[k], far.cornerConfidence[k], far.cornerSigmaPx[k]};

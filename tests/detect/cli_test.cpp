@@ -1,0 +1,116 @@
+// `photowalk detect` end to end: the shot it writes is read by `photowalk measure`;
+// no corridor is exit 2 with nothing written; bad input is exit 1 with one line.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "tests/detect/corridor_cases.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+struct CommandRun {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+class DetectCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    binary_ = fs::path(PW_BINARY_DIR) / "photowalk";
+    if (!fs::exists(binary_)) GTEST_SKIP() << binary_ << " is not built";
+    dir_ = fs::temp_directory_path() / ("pw_detect_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (!dir_.empty()) fs::remove_all(dir_, ec);
+  }
+  CommandRun run(const std::string& arguments) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = binary_.string() + " " + arguments + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    CommandRun r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+  static std::string slurp(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  fs::path binary_, dir_;
+};
+
+TEST_F(DetectCommand, WritesAShotThatMeasureReads) {
+  const auto cases = pw::metrology::detect::testing::loadCorridorCases();
+  if (cases.empty()) GTEST_SKIP() << "../shared/corridors is not beside the checkout";
+  const auto& c = cases[0];
+  const fs::path shot = dir_ / "shot.json", overlay = dir_ / "overlay.png";
+  const CommandRun detect = run("detect " + c.imagePath + " --focal-px " + std::to_string(c.focalPx) + " --camera-height " +
+                         std::to_string(c.cameraHeightM) + " -o " + shot.string() + " --overlay " + overlay.string());
+  ASSERT_EQ(detect.exitCode, 0) << detect.err;
+  const nlohmann::json doc = nlohmann::json::parse(slurp(shot));
+  EXPECT_TRUE(fs::path(doc["image"].get<std::string>()).is_relative());
+  for (int k = 1; k <= 8; ++k) {
+    const std::string name = "P" + std::to_string(k);
+    ASSERT_TRUE(doc["corners_px"].contains(name)) << name;
+    const double confidence = doc["detection"]["corners"][name]["confidence"];
+    EXPECT_TRUE(confidence >= 0 && confidence <= 1) << name;
+  }
+  EXPECT_EQ(doc["detection"]["focal_source"], "given");
+  EXPECT_GT(doc["detection"]["vanishing_points"]["corridor"]["confidence"].get<double>(), 0.5);
+  const cv::Mat drawn = cv::imread(overlay.string());
+  EXPECT_EQ(drawn.cols, c.image.cols);
+
+  const CommandRun measure = run("measure " + shot.string());
+  ASSERT_EQ(measure.exitCode, 0) << measure.err;
+  const nlohmann::json m = nlohmann::json::parse(measure.out);
+  EXPECT_NEAR(m["width_m"].get<double>(), c.widthM, 0.02 * c.widthM);
+  EXPECT_NEAR(m["height_m"].get<double>(), c.heightM, 0.02 * c.heightM);
+}
+
+TEST_F(DetectCommand, NoCorridorIsExitTwoAndWritesNothing) {
+  const fs::path photo = dir_ / "blank.png", shot = dir_ / "shot.json";
+  ASSERT_TRUE(cv::imwrite(photo.string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar(120, 130, 140))));
+  const CommandRun r = run("detect " + photo.string() + " -o " + shot.string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("no corridor found"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(shot));
+  // Nor any temporary file beside it.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);  // photo, stdout, stderr
+}
+
+TEST_F(DetectCommand, BadInputIsExitOneWithOneLine) {
+  const fs::path shot = dir_ / "shot.json";
+  for (const std::string& args : {"detect " + (dir_ / "missing.png").string() + " -o " + shot.string(),
+                                  "detect " + (dir_ / "missing.png").string(),
+                                  "detect x.png -o " + shot.string() + " --focal-px abc",
+                                  "detect x.png -o " + shot.string() + " --principal-point 3",
+                                  "detect x.png -o " + shot.string() + " --camera-height -1",
+                                  "detect x.png -o " + shot.string() + " --frobnicate"}) {
+    const CommandRun r = run(args);
+    EXPECT_EQ(r.exitCode, 1) << args;
+    EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+  }
+  const fs::path notImage = dir_ / "not_an_image.png";
+  std::ofstream(notImage) << "hello";
+  const CommandRun r = run("detect " + notImage.string() + " -o " + shot.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("not a readable"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(shot));
+}
+
+}  // namespace

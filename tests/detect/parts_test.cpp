@@ -1,0 +1,169 @@
+// The parts of detection on inputs with exact answers.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "metrology/detect/boundaries.h"
+#include "metrology/detect/cross_sections.h"
+#include "metrology/detect/detect.h"
+#include "metrology/detect/edge_fit.h"
+#include "metrology/detect/geometry.h"
+#include "metrology/detect/line_segments.h"
+#include "metrology/detect/vanishing_points.h"
+
+namespace pw::metrology::detect {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Dark left of x = 99.5, light right of it (pixel centres at integers).
+cv::Mat verticalStep() {
+  cv::Mat g(200, 200, CV_8U, cv::Scalar(30));
+  g(cv::Rect(100, 0, 100, 200)).setTo(210);
+  return g;
+}
+
+double meanX(const std::vector<LineSegment>& segments) {
+  EXPECT_EQ(segments.size(), 1u);
+  return segments.empty() ? -1 : 0.5 * (segments[0].a.x + segments[0].b.x);
+}
+
+TEST(DetectParts, LineSegmentsAreInFullResolutionPixelCentres) {
+  const cv::Mat full = verticalStep();
+  EXPECT_NEAR(meanX(detectLineSegments(full, 1.0, 20)), 99.5, 0.05);
+  cv::Mat half;
+  cv::resize(full, half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
+  EXPECT_NEAR(meanX(detectLineSegments(half, 0.5, 20)), 99.5, 0.1);
+}
+
+TEST(DetectParts, LineSegmentsNeedContrast) {
+  EXPECT_TRUE(detectLineSegments(cv::Mat(200, 200, CV_8U, cv::Scalar(90)), 1.0, 10).empty());
+}
+
+// An antialiased straight edge (8x8 supersampled area coverage) along `line`.
+cv::Mat slantedEdge(glm::dvec3 line) {
+  cv::Mat img(240, 320, CV_8UC3);
+  for (int y = 0; y < img.rows; ++y)
+    for (int x = 0; x < img.cols; ++x) {
+      int inside = 0;
+      for (int sy = 0; sy < 8; ++sy)
+        for (int sx = 0; sx < 8; ++sx) inside += glm::dot(line, glm::dvec3(x - 0.4375 + sx / 8.0, y - 0.4375 + sy / 8.0, 1)) > 0;
+      const double a = inside / 64.0;
+      img.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(40 + 150 * a), cv::saturate_cast<uchar>(60 + 120 * a),
+                                          cv::saturate_cast<uchar>(200 - 100 * a));
+    }
+  return img;
+}
+
+TEST(DetectParts, EdgeFitIsSubPixel) {
+  const glm::dvec2 p(160.3, 120.0), dir = glm::normalize(glm::dvec2(0.3, 1.0));
+  const glm::dvec3 truth = lineThrough(p, p + dir);
+  const cv::Mat img = slantedEdge(truth);
+  EdgeSearch search;
+  // Start 2 px off, constrained through a far point of the true line.
+  const glm::dvec2 offset(2.0 * -dir.y, 2.0 * dir.x);
+  search.from = p - 90.0 * dir + offset;
+  search.to = p + 90.0 * dir + offset;
+  search.through = homogeneous(p + 5000.0 * dir);
+  search.searchPx = 4;
+  auto fit = fitEdgeLine(img, search);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_LT(std::abs(glm::dot(fit->line, homogeneous(p))), 0.05);
+  EXPECT_LT(std::abs(glm::dot(fit->line, homogeneous(p + 80.0 * dir))), 0.05);
+  EXPECT_GT(fit->coverage, 0.9);
+  // Nothing to find on a flat image.
+  EXPECT_FALSE(fitEdgeLine(cv::Mat(240, 320, CV_8UC3, cv::Scalar(90, 90, 90)), search).has_value());
+}
+
+struct Camera {
+  glm::dmat3 worldToCamera;
+  glm::dvec3 centre;
+  double f;
+  glm::dvec2 pp;
+  glm::dvec2 project(glm::dvec3 w) const {
+    const glm::dvec3 c = worldToCamera * (w - centre);
+    return {pp.x + f * c.x / c.z, pp.y - f * c.y / c.z};
+  }
+  glm::dvec2 vanishing(glm::dvec3 dir) const {
+    const glm::dvec3 c = worldToCamera * dir;
+    return {pp.x + f * c.x / c.z, pp.y - f * c.y / c.z};
+  }
+};
+
+Camera turnedCamera() {
+  const double y = 10 * kPi / 180, p = -6 * kPi / 180;
+  const glm::dmat3 yaw(std::cos(y), 0, -std::sin(y), 0, 1, 0, std::sin(y), 0, std::cos(y));
+  const glm::dmat3 pitch(1, 0, 0, 0, std::cos(p), std::sin(p), 0, -std::sin(p), std::cos(p));
+  return Camera{glm::transpose(yaw * pitch), {0.2, 1.5, 0}, 600.0, {320, 240}};
+}
+
+TEST(DetectParts, ManhattanFrameOfProjectedBoxLines) {
+  const Camera cam = turnedCamera();
+  std::vector<LineSegment> segments;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto add = [&](glm::dvec3 a, glm::dvec3 b) {
+    const glm::dvec2 pa = cam.project(a), pb = cam.project(b);
+    segments.push_back({pa, pb, glm::length(pb - pa)});
+  };
+  // Forty lines of each family: across the corridor, along it, vertical.
+  for (int i = 0; i < 40; ++i) {
+    const double z = 6 + 4 * u(rng), x = 1.2 * u(rng), y = 1.5 + 1.4 * u(rng);
+    add({-1.0, y, z}, {1.0, y, z});
+    add({x, y, z}, {x, y, z + 2});
+    add({x, 0.2, z}, {x, 2.6, z});
+  }
+  auto frame = estimateManhattanFrame(segments, PinholeCamera{cam.f, cam.pp}, cv::Size(640, 480));
+  ASSERT_TRUE(frame.ok()) << frame.message();
+  EXPECT_LT(glm::length(frame->corridor.pixel() - cam.vanishing({0, 0, 1})), 0.01);
+  EXPECT_LT(glm::length(frame->horizontal.pixel() - cam.vanishing({1, 0, 0})), 1.0);
+  EXPECT_LT(glm::length(frame->vertical.pixel() - cam.vanishing({0, 1, 0})), 1.0);
+  EXPECT_GT(frame->corridor.confidence, 0.5);
+  auto f = focalFromOrthogonalPoints(frame->corridor, frame->horizontal, cam.pp, 800);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_NEAR(*f, 600.0, 0.5);
+}
+
+TEST(DetectParts, ManhattanFrameNeedsSegments) {
+  EXPECT_FALSE(estimateManhattanFrame({}, PinholeCamera{600, {320, 240}}, cv::Size(640, 480)).ok());
+}
+
+TEST(DetectParts, CrossSectionFamilyFollowsTheBoxInDepth) {
+  const Camera cam = turnedCamera();
+  const auto section = [&](double z) {
+    return Quad{cam.project({-1.2, 2.8, z}), cam.project({1.2, 2.8, z}), cam.project({-1.2, 0, z}), cam.project({1.2, 0, z})};
+  };
+  const glm::dvec2 vp = cam.vanishing({0, 0, 1});
+  const Quad far = section(14);
+  RecedingBoundaries rays;
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    const glm::dvec2 d = far[std::array{2, 3, 0, 1}[b]] - vp;
+    rays.angle[b] = std::atan2(d.y, d.x);
+  }
+  const auto homogeneousVp = [&](glm::dvec3 dir) { return homogeneous(cam.vanishing(dir)); };
+  const CrossSectionFamily family(vp, homogeneousVp({1, 0, 0}), homogeneousVp({0, 1, 0}), rays);
+  for (double z : {14.0, 8.0, 4.5}) {
+    const Quad truth = section(z);
+    auto q = family.at(glm::length(truth[2] - vp));
+    ASSERT_TRUE(q.has_value());
+    for (int k = 0; k < 4; ++k) EXPECT_LT(glm::length((*q)[k] - truth[k]), 1e-6) << "z " << z << " corner " << k;
+  }
+}
+
+TEST(DetectParts, DetectRejectsInputThatMakesNoSense) {
+  const cv::Mat photo(480, 640, CV_8UC3, cv::Scalar(100, 100, 100));
+  EXPECT_FALSE(detectCorridor(cv::Mat(), {}).ok());
+  EXPECT_FALSE(detectCorridor(cv::Mat(480, 640, CV_8UC1, cv::Scalar(1)), {}).ok());
+  EXPECT_FALSE(detectCorridor(cv::Mat(10, 10, CV_8UC3, cv::Scalar(1, 1, 1)), {}).ok());
+  EXPECT_FALSE(detectCorridor(photo, DetectOptions{.focalPx = -5.0}).ok());
+  EXPECT_FALSE(detectCorridor(photo, DetectOptions{.focalPx = std::nan("")}).ok());
+  EXPECT_FALSE(detectCorridor(photo, DetectOptions{.principalPointPx = glm::dvec2(-3, 10)}).ok());
+  auto blank = detectCorridor(photo, {});
+  ASSERT_TRUE(blank.ok());
+  EXPECT_FALSE(blank->found);
+}
+
+}  // namespace
+}  // namespace pw::metrology::detect
