@@ -1,6 +1,7 @@
 #include "metrology/shot_check.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -25,7 +26,8 @@ std::string quadName(int plane) {
          cornerName(q[2]) + "-" + cornerName(q[3]);
 }
 
-Status checkQuad(const Shot& shot, int plane) {
+// Coincident or collinear corners of one plane.
+Status checkDegenerate(const Shot& shot, int plane) {
   const auto& q = kPlaneCorners[plane];
   const std::string name = spokenName(plane);
   for (int i = 0; i < 4; ++i) {
@@ -36,24 +38,62 @@ Status checkQuad(const Shot& shot, int plane) {
       }
     }
   }
-  // Turning at each corner: positive cross product = clockwise on screen (v down).
-  int positive = 0, negative = 0;
   for (int i = 0; i < 4; ++i) {
     const glm::dvec2 a = shot.cornersPx[q[i]], b = shot.cornersPx[q[(i + 1) % 4]], c = shot.cornersPx[q[(i + 2) % 4]];
     const glm::dvec2 e1 = b - a, e2 = c - b;
-    const double sine = cross(e1, e2) / (glm::length(e1) * glm::length(e2));
-    if (std::abs(sine) < std::sin(glm::radians(0.5))) {
+    if (std::abs(cross(e1, e2)) / (glm::length(e1) * glm::length(e2)) < std::sin(glm::radians(0.5))) {
       return makeError(std::string("corners ") + cornerName(q[i]) + ", " + cornerName(q[(i + 1) % 4]) + " and " +
                        cornerName(q[(i + 2) % 4]) + " are collinear; the " + name + " plane is degenerate");
     }
-    (sine > 0 ? positive : negative)++;
   }
-  if (negative == 4) {
-    return makeError("the " + quadName(plane) +
-                     " runs anticlockwise: left and right (or top and bottom) corners are swapped");
+  return {};
+}
+
+enum class Winding { kClockwise, kAnticlockwise, kCrossed };
+
+// Turning at each corner: a positive cross product is clockwise on screen (v down).
+Winding windingOf(const Shot& shot, int plane) {
+  const auto& q = kPlaneCorners[plane];
+  int positive = 0;
+  for (int i = 0; i < 4; ++i) {
+    const glm::dvec2 a = shot.cornersPx[q[i]], b = shot.cornersPx[q[(i + 1) % 4]], c = shot.cornersPx[q[(i + 2) % 4]];
+    positive += cross(b - a, c - b) > 0 ? 1 : 0;
   }
-  if (negative > 0) {
-    return makeError("the " + quadName(plane) + " crosses itself or is not convex; check the corner order");
+  return positive == 4 ? Winding::kClockwise : positive == 0 ? Winding::kAnticlockwise : Winding::kCrossed;
+}
+
+// Every quad must run clockwise as kPlaneCorners lists it; when some do not, say
+// which corners were most likely confused.
+Status checkWinding(const Shot& shot) {
+  std::array<Winding, kPlaneCount> w{};
+  for (int plane = 0; plane < kPlaneCount; ++plane) w[plane] = windingOf(shot, plane);
+  for (int plane = 0; plane < kPlaneCount; ++plane) {
+    if (w[plane] == Winding::kCrossed) {
+      return makeError("the " + quadName(plane) + " crosses itself or is not convex; check the corner order");
+    }
+  }
+  const int far = static_cast<int>(Plane::kFarWall);
+  bool othersAllReversed = true;
+  for (int plane = 0; plane < kPlaneCount; ++plane) {
+    if (plane != far) othersAllReversed = othersAllReversed && w[plane] == Winding::kAnticlockwise;
+  }
+  const auto& c = shot.cornersPx;
+  if (w[far] == Winding::kClockwise && othersAllReversed) {
+    return makeError("the far and near corners are swapped: P1..P4 are the far wall's corners, P5..P8 the near end's");
+  }
+  if (w[far] == Winding::kAnticlockwise) {
+    if (c[P1].y + c[P2].y > c[P3].y + c[P4].y) {
+      return makeError("top and bottom corners are swapped: P1, P2, P7, P8 are the top (ceiling) corners");
+    }
+    if (c[P1].x + c[P3].x > c[P2].x + c[P4].x) {
+      return makeError("left and right corners are swapped: P1, P3, P5, P7 are the left wall's corners");
+    }
+  }
+  for (int plane = 0; plane < kPlaneCount; ++plane) {
+    if (w[plane] == Winding::kAnticlockwise) {
+      return makeError("the " + quadName(plane) +
+                       " runs anticlockwise, as if seen from outside the corridor; check its corners' order");
+    }
   }
   return {};
 }
@@ -96,8 +136,8 @@ Status checkShot(const Shot& shot) {
                        std::to_string(shot.imageWidth) + "x" + std::to_string(shot.imageHeight) + " image");
     }
   }
-  for (int plane = 0; plane < kPlaneCount; ++plane) PW_TRY(checkQuad(shot, plane));
-  return {};
+  for (int plane = 0; plane < kPlaneCount; ++plane) PW_TRY(checkDegenerate(shot, plane));
+  return checkWinding(shot);
 }
 
 }  // namespace pw::metrology

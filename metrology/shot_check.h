@@ -21,7 +21,8 @@ Result<Intrinsics> shotIntrinsics(const Shot& shot);
 // of a plane on one line (angle under 0.5 degrees); every plane's quad convex and
 // running clockwise on screen in kPlaneCorners order (top-left, top-right,
 // bottom-right, bottom-left as seen from inside; a crossed or mirrored quad means
-// corners in the wrong order).
+// corners in the wrong order, and the message says which were likely confused:
+// far with near, top with bottom, or left with right).
 Status checkShot(const Shot& shot);
 
 }  // namespace pw::metrology

@@ -156,7 +156,7 @@ def main():
              "outside"),
             ("crossed far wall", ["measure", shot_with("crossed", swap("P1", "P2"))], "crosses itself"),
             ("collinear corners", ["measure", shot_with("collinear", collinear)], "collinear"),
-            ("near and far swapped", ["measure", shot_with("swapped", swap_near_far)], "P"),
+            ("near and far swapped", ["measure", shot_with("swapped", swap_near_far)], "far and near corners are swapped"),
             ("bad method", ["measure", good, "--method", "magic"], "general or seed"),
             ("negative sigma", ["measure", good, "--sigma-px", "-1"], "sigma"),
             ("unknown option", ["measure", good, "--frobnicate"], "unknown option"),
