@@ -1,5 +1,6 @@
-// glTF export speed: writeGltf on a corridor-sized scene (five photo textures and a
-// 262k-vertex mesh), against baselines measured in the same run:
+// glTF export speed: writeGltf on a corridor-sized scene (five photo textures, one
+// rectified-wall-like texture and a 262k-vertex mesh), against baselines measured in
+// the same run:
 //   stb PNGs    embedding through engine/scene's encodePng (stb_image_write) on one
 //               thread, plus an atomic write as large as the .glb;
 //   copy+write  for geometry only: copying the vertex arrays once and writing them.
@@ -61,6 +62,23 @@ std::vector<std::shared_ptr<const Image>> photos() {
     for (size_t i = 3; i < noise.rgba.size(); i += 4) noise.rgba[i] = 255;
     out.push_back(std::make_shared<Image>(std::move(noise)));
   }
+  // A rectified wall: photowalk stretches the photo's receding walls along the
+  // corridor, so its wall textures are smooth along x. Stand-in: the first photo
+  // stretched 5x along x (linear interpolation), 4000 px wide like a 19 m wall.
+  const Image& photo = *out.front();
+  Image wall = makeImage(photo.width * 5, photo.height);
+  for (int y = 0; y < wall.height; ++y) {
+    for (int x = 0; x < wall.width; ++x) {
+      const float u = std::min((x + 0.5f) / 5.0f - 0.5f, photo.width - 1.0f);
+      const int x0 = std::max(0, static_cast<int>(std::floor(u)));
+      const int x1 = std::min(photo.width - 1, x0 + 1);
+      const float f = std::clamp(u - x0, 0.0f, 1.0f);
+      for (int c = 0; c < 4; ++c) {
+        wall.pixel(x, y)[c] = static_cast<uint8_t>(std::lround(photo.pixel(x0, y)[c] * (1 - f) + photo.pixel(x1, y)[c] * f));
+      }
+    }
+  }
+  out.push_back(std::make_shared<Image>(std::move(wall)));
   return out;
 }
 
@@ -127,7 +145,7 @@ int main() {
     images.push_back(s.appearance->texture->image.get());
     pixels += images.back()->rgba.size() / 4;
   }
-  std::printf("scene: %zu photo textures (%.2f Mpixel in all), %zu shapes, %zu vertices in the big mesh\n",
+  std::printf("scene: %zu textures (%.2f Mpixel in all), %zu shapes, %zu vertices in the big mesh\n",
               images.size(), pixels / 1e6, textured.shapes.size(), geometry.shapes.back().mesh->positions.size());
 
   auto glbBytes = encodeGltf(textured, GltfContainer::kGlb);
