@@ -3,17 +3,30 @@
 #include <system_error>
 
 #include "engine/scene/sample_scene.h"
+#include "engine/vrml/vrml_reader.h"
 
 namespace pw::editor {
 
 Result<engine::Scene> loadModel(const std::filesystem::path& path, std::vector<std::string>* warnings) {
-  (void)warnings;  // nothing produces warnings until the VRML reader is hooked in here
   if (path == kSampleSceneName) return engine::makeSampleScene();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     return makeError(path.string() + ": no such file (or use '" + kSampleSceneName + "' for the built-in room)");
   }
   const std::string ext = path.extension().string();
+  std::string name = path.filename().string();
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (name.ends_with(".wrl") || name.ends_with(".wrl.gz") || name.ends_with(".wrz") || name.ends_with(".vrml")) {
+    engine::Diagnostics diagnostics;
+    auto scene = engine::readVrml(path, &diagnostics);
+    if (warnings) {
+      for (const engine::Diagnostic& d : diagnostics.items()) {
+        warnings->push_back((d.severity == engine::Severity::kNote ? "note: " : "") + d.message +
+                            (d.count > 1 ? " (x" + std::to_string(d.count) + ")" : ""));
+      }
+    }
+    return scene;
+  }
   return makeError(path.string() + ": cannot read " + (ext.empty() ? "files without an extension" : ext + " files") +
                    " yet; the only scene available is the built-in '" + kSampleSceneName + "'");
 }
