@@ -59,11 +59,12 @@ Result<SeedConstruction> seedConstruct(const std::array<glm::dvec2, kCornerCount
       return makeError(std::string("corner ") + cornerName(i) + " lies on the vanishing point; it has no depth");
     }
   }
-  // Any positive drawing scale gives the same answers; this one puts GL through the
-  // lowest floor corner so that the construction stays near the photo when drawn.
+  // Any positive drawing scale gives the same answers; this one puts GL a fifth
+  // below the lowest floor corner, so that the construction is visible when drawn
+  // over the photo.
   double lowest = 0;
   for (int corner : kFloorCorners) lowest = std::max(lowest, c.rotatedPx[corner].y - vp.y);
-  const double s = lowest / cameraHeightM;
+  const double s = 1.2 * lowest / cameraHeightM;
   c.drawingScalePxPerM = s;
   // Step 2: the ground line, s·h below the horizon.
   c.groundLineV = vp.y + s * cameraHeightM;

@@ -8,6 +8,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "metrology/seed_method.h"
+
 namespace pw::metrology {
 
 namespace {
@@ -22,6 +24,7 @@ const cv::Scalar kOutlineColour(235, 235, 235);
 const cv::Scalar kFitColour(60, 60, 255);       // red
 const cv::Scalar kInk(255, 255, 255);
 const cv::Scalar kShadow(20, 20, 20);
+const cv::Scalar kGroundLineColour(255, 80, 255);  // magenta
 
 constexpr int kShift = 4;  // sub-pixel drawing: coordinates in 1/16 px
 cv::Point fixed(const glm::dvec2& p) {
@@ -203,6 +206,30 @@ Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, con
                  static_cast<int>(3 * s.radius), s.lineWidth + 1, cv::LINE_AA);
   outlinedText(canvas, "VP", cv::Point(static_cast<int>(at(vp).x + 1.5 * s.radius), static_cast<int>(at(vp).y - 1.5 * s.radius)),
                s, kRecedingColour);
+
+  // The seed paper's construction (its figure 2): the ground line GL, s·h below the
+  // horizon, and each floor corner extended from VP to GL (2.1.1).
+  if (m.method == Method::kSeed) {
+    auto seed = seedConstruct(shot.cornersPx, m.camera.focalPx, m.cameraHeightM);
+    if (seed) {
+      const double roll = glm::radians(seed->rollDeg);
+      auto unrotate = [&](const glm::dvec2& p) {  // the construction's frame back to the photo
+        const glm::dvec2 d = p - vp;
+        return vp + glm::dvec2(std::cos(roll) * d.x - std::sin(roll) * d.y, std::sin(roll) * d.x + std::cos(roll) * d.y);
+      };
+      line(canvas, at(unrotate({vp.x - 2 * diag, seed->groundLineV})), at(unrotate({vp.x + 2 * diag, seed->groundLineV})),
+           kGroundLineColour, s.lineWidth);
+      for (int k = 0; k < 4; ++k) {
+        const glm::dvec2 pg = unrotate(seed->floor[k].groundPoint);
+        dashedLine(canvas, at(c[P3 + k]), at(pg), kGroundLineColour, std::max(1, s.lineWidth / 2), s.radius);
+        cv::circle(canvas, fixed(at(pg)), static_cast<int>(0.6 * s.radius * (1 << kShift)), kGroundLineColour, -1, cv::LINE_AA,
+                   kShift);
+      }
+      const glm::dvec2 label = at(unrotate({vp.x + 0.12 * diag, seed->groundLineV})) + glm::dvec2(0, 2.5 * s.radius);
+      outlinedText(canvas, "GL: ground line, h below the horizon", cv::Point(static_cast<int>(label.x), static_cast<int>(label.y)), s,
+                   kGroundLineColour);
+    }
+  }
 
   // Corners: clicked (circles, labelled) and fitted (crosses).
   const glm::dvec2 centre = 0.125 * (c[0] + c[1] + c[2] + c[3] + c[4] + c[5] + c[6] + c[7]);

@@ -15,7 +15,8 @@ namespace pw::metrology {
 // way): the five plane outlines, the corners P1..P8 as clicked (circles, labelled)
 // and as fitted (crosses), the receding edges extended to the vanishing point VP,
 // the horizon, and each dimension written along its edge with its ± (width on
-// P5-P6, height on P6-P8, length on P5-P3), plus a legend with the camera and the
+// P5-P6, height on P6-P8, length on P5-P3); for the seed method also the paper's
+// ground line GL with the floor corners extended to it; plus a legend with the camera and the
 // reprojection error in a strip below. Returns a BGR image. Fails only on an empty
 // photo or one of another pixel type.
 Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, const Measurement& measurement);
