@@ -16,7 +16,6 @@ constexpr int kCoarseWindowBins = 64;    // 2.8 degrees each side: finds the ste
 constexpr int kFineWindowBins = 8;       // 0.35 degree each side: places it
 constexpr double kFineRangeDeg = 1.0;
 constexpr double kQuadrantMarginDeg = 3.0;
-constexpr double kEdgeThreshold = 6.0;   // grey levels per pixel across the ray
 constexpr double kMinContrast = 1.0;
 
 // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49-style minimax polynomial),
@@ -121,7 +120,7 @@ double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle) {
     double across = 0;
     for (double k = -1; k <= 1; k += 1)
       across = std::max(across, std::abs(glm::dot(image.gradient(vp + r * dir + k * normal), normal)));
-    covered += across > kEdgeThreshold;
+    covered += across > kEdgeGreyPerPx;
     ++samples;
   }
   return samples > 0 ? static_cast<double>(covered) / samples : 0.0;

@@ -9,7 +9,6 @@
 namespace pw::metrology::detect {
 namespace {
 
-constexpr double kEdgeThreshold = 6.0;  // grey levels per pixel across a side
 constexpr double kStepPx = 0.5;         // scan step in t
 constexpr double kMinSideCoverage = 0.3;
 constexpr double kMinFarWallScore = 1.2;
@@ -17,10 +16,10 @@ constexpr double kMarkedMinSide = 0.6;
 constexpr double kMarkedMinMean = 0.75;
 
 // Whether an edge runs along `normal`'s perpendicular at p: the strongest gradient
-// across it within `reach` pixels.
+// across it within `reach` pixels (bilinear; for the few samples along the rays).
 bool edgeAt(const WorkingImage& image, glm::dvec2 p, glm::dvec2 normal, double reach) {
   for (double k = -reach; k <= reach; k += 1.0) {
-    if (std::abs(glm::dot(image.gradient(p + k * normal), normal)) > kEdgeThreshold) return true;
+    if (std::abs(glm::dot(image.gradient(p + k * normal), normal)) > kEdgeGreyPerPx) return true;
   }
   return false;
 }
@@ -33,7 +32,7 @@ double sideCoverage(const WorkingImage& image, glm::dvec2 a, glm::dvec2 b) {
   // The ends meet other edges (the boundaries): keep to the side's middle 80%.
   int samples = 0, covered = 0;
   for (double s = 0.1 * length; s <= 0.9 * length; s += 1.0) {
-    covered += edgeAt(image, a + s * along, normal, 1.0);
+    covered += image.edgeNear(a + s * along, normal);
     ++samples;
   }
   return samples > 0 ? static_cast<double>(covered) / samples : 0.0;
@@ -127,23 +126,34 @@ Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSect
   }
   constexpr std::array<int, kBoundaryCount> kCornerOfBoundary = {2, 3, 0, 1};
 
-  CrossSectionMatch best;
-  best.score = -1;
+  std::vector<CrossSectionMatch> scan;
   for (double t = 3.0; t <= tMax; t += kStepPx) {
     auto q = family.at(t);
     if (!q) continue;
     CrossSectionMatch m = evaluate(image, *q, t);
-    if (minOf(m.sideCoverage) < kMinSideCoverage) continue;
-    double outside = 0, inside = 0;
-    for (int b = 0; b < kBoundaryCount; ++b) {
-      const double r = glm::length((*q)[kCornerOfBoundary[b]] - vp);
-      outside += rays[b].coverage(r + 2, r + 2 + std::max(10.0, 0.5 * r));
-      inside += rays[b].coverage(0.5 * r, r - 2);
+    m.score = -1;
+    if (minOf(m.sideCoverage) >= kMinSideCoverage) {
+      double outside = 0, inside = 0;
+      for (int b = 0; b < kBoundaryCount; ++b) {
+        const double r = glm::length((*q)[kCornerOfBoundary[b]] - vp);
+        outside += rays[b].coverage(r + 2, r + 2 + std::max(10.0, 0.5 * r));
+        inside += rays[b].coverage(0.5 * r, r - 2);
+      }
+      m.boundaryContrast = (outside - inside) / kBoundaryCount;
+      m.score = meanOf(m.sideCoverage) + m.boundaryContrast;
     }
-    m.boundaryContrast = (outside - inside) / kBoundaryCount;
-    m.score = meanOf(m.sideCoverage) + m.boundaryContrast;
-    if (m.score > best.score) best = m;
+    scan.push_back(m);
   }
+  if (scan.empty()) return makeError("no far wall: the corridor's boundaries leave the photo at once");
+  // The edge maps are a pixel wide on either side, so the best score is a plateau a
+  // few steps long: take its middle.
+  size_t top = 0;
+  for (size_t i = 0; i < scan.size(); ++i)
+    if (scan[i].score > scan[top].score) top = i;
+  size_t first = top, last = top;
+  while (first > 0 && scan[first - 1].score >= scan[top].score - 0.02) --first;
+  while (last + 1 < scan.size() && scan[last + 1].score >= scan[top].score - 0.02) ++last;
+  const CrossSectionMatch best = scan[(first + last) / 2];
   if (best.score < kMinFarWallScore) {
     return makeError("no far wall: no rectangle across the corridor where its boundaries begin");
   }
@@ -161,13 +171,16 @@ std::optional<CrossSectionMatch> findMarkedCrossSection(const WorkingImage& imag
     m.score = meanOf(m.sideCoverage);
     scan.push_back(m);
   }
-  // The first local maximum (within 3 px) that passes: the deepest marked section.
+  // The first local maximum (within 3 px) that passes: the deepest marked section,
+  // at the inner end of its plateau (a band's far edge comes first). The edge maps
+  // reach a pixel beyond each edge, so the plateau starts a pixel short of it.
+  const size_t kOnePixel = static_cast<size_t>(std::lround(1.0 / kStepPx));
   for (size_t i = 0; i < scan.size(); ++i) {
     const CrossSectionMatch& m = scan[i];
     if (minOf(m.sideCoverage) < kMarkedMinSide || m.score < kMarkedMinMean) continue;
     bool isPeak = true;
     for (size_t j = i > 6 ? i - 6 : 0; j < std::min(scan.size(), i + 7); ++j) isPeak &= scan[j].score <= m.score;
-    if (isPeak) return m;
+    if (isPeak) return scan[std::min(i + kOnePixel, scan.size() - 1)];
   }
   return std::nullopt;
 }

@@ -31,8 +31,10 @@ struct EdgePoint {
 };
 
 // The edge across one normal: Haar step response at every half-pixel between
-// samples one pixel apart, its maximum refined by a parabola.
-std::optional<EdgePoint> findEdge(const cv::Mat& photo, glm::dvec2 centre, glm::dvec2 normal, double searchPx, int half) {
+// samples one pixel apart; of its peaks at least `relative` times the strongest, the
+// one nearest the centre, placed by a parabola.
+std::optional<EdgePoint> findEdge(const cv::Mat& photo, glm::dvec2 centre, glm::dvec2 normal, double searchPx, int half,
+                                  double relative) {
   const int reach = static_cast<int>(std::ceil(searchPx)) + half;
   std::vector<glm::dvec3> colour(2 * reach + 1);
   for (int k = -reach; k <= reach; ++k) colour[k + reach] = sampleColour(photo, centre + static_cast<double>(k) * normal);
@@ -44,17 +46,24 @@ std::optional<EdgePoint> findEdge(const cv::Mat& photo, glm::dvec2 centre, glm::
     for (int i = 0; i < half; ++i) before += colour[j - i + reach], after += colour[j + 1 + i + reach];
     response.push_back(glm::length(after - before) / half);
   }
+  const auto offsetOf = [&](int i) { return first + i + 0.5; };
+  double strongest = 0;
+  for (int i = 1; i + 1 < static_cast<int>(response.size()); ++i) {
+    if (std::abs(offsetOf(i)) <= searchPx) strongest = std::max(strongest, response[i]);
+  }
+  if (strongest < kMinStep) return std::nullopt;
   int best = -1;
   for (int i = 1; i + 1 < static_cast<int>(response.size()); ++i) {
-    const double offset = first + i + 0.5;
-    if (std::abs(offset) > searchPx) continue;
-    if (best < 0 || response[i] > response[best]) best = i;
+    const double offset = offsetOf(i);
+    const bool peak = response[i] >= response[i - 1] && response[i] >= response[i + 1];
+    if (std::abs(offset) > searchPx || !peak || response[i] < std::max(kMinStep, relative * strongest)) continue;
+    if (best < 0 || std::abs(offset) < std::abs(offsetOf(best))) best = i;
   }
-  if (best < 0 || response[best] < kMinStep) return std::nullopt;
+  if (best < 0) return std::nullopt;
   const double l = response[best - 1], c = response[best], r = response[best + 1];
   const double denom = l - 2 * c + r;
   const double delta = denom < 0 ? std::clamp(0.5 * (l - r) / denom, -0.5, 0.5) : 0.0;
-  const double offset = first + best + 0.5 + delta;
+  const double offset = offsetOf(best) + delta;
   return EdgePoint{centre + offset * normal, c};
 }
 
@@ -117,7 +126,7 @@ std::optional<EdgeLine> fitEdgeLine(const cv::Mat& photo, const EdgeSearch& sear
     const glm::dvec2 centre = search.from + (length * (i + 0.5) / samples) * along;
     if (centre.x < 0 || centre.y < 0 || centre.x > photo.cols - 1 || centre.y > photo.rows - 1) continue;
     const double window = search.searchPx + search.searchGrowPx * (i + 0.5) / samples;
-    if (auto e = findEdge(photo, centre, normal, window, half)) points.push_back(*e);
+    if (auto e = findEdge(photo, centre, normal, window, half, search.minRelativeStrength)) points.push_back(*e);
   }
   if (points.size() < 5) return std::nullopt;
 

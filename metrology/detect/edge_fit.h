@@ -25,11 +25,17 @@ struct EdgeSearch {
   double searchGrowPx = 0;  // ... plus this much more at `to` (linearly): for rays whose angle is uncertain
   double stepHalfWidthPx = 2;  // each side's width in the step response (a Haar-like step filter)
   int maxSamples = 400;
+  // Among the edges at least this share as strong as the strongest in the window,
+  // take the one nearest the initial line: a tile joint 3 px beside a far wall's foot
+  // must not win by contrast alone, nor a band's outer edge where its inner edge
+  // borders a dark tile.
+  double minRelativeStrength = 0.5;
 };
 
 // Finds the edge along each of up to maxSamples normals to the stretch from..to
-// (the position where the mean colour of the `stepHalfWidthPx` pixels on either
-// side differs most, placed to sub-pixel by a parabola through the response), then
+// (a peak of the difference between the mean colours of the `stepHalfWidthPx`
+// pixels on either side, chosen as EdgeSearch says and placed to sub-pixel by a
+// parabola through the response), then
 // fits the line through `through` that minimises the squared distances, with
 // outliers (texture edges, occlusions) dropped by a MAD rule. nullopt when fewer
 // than 5 samples found an edge. `photo` is CV_8UC3 at full resolution.

@@ -30,7 +30,8 @@ double cornerConfidence(const EdgeLine& a, bool fittedA, const EdgeLine& b, bool
 }  // namespace
 
 RefinedSection refineCrossSection(const cv::Mat& photo, const Quad& coarse, glm::dvec3 horizontal,
-                                  glm::dvec3 vertical, double searchPx, double stepHalfWidthPx) {
+                                  glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
+                                  double minRelativeStrength) {
   RefinedSection out;
   std::array<glm::dvec3, 4> lines{};
   for (int side = 0; side < 4; ++side) {
@@ -42,6 +43,7 @@ RefinedSection refineCrossSection(const cv::Mat& photo, const Quad& coarse, glm:
     search.through = side == kTopSide || side == kBottomSide ? horizontal : vertical;
     search.searchPx = searchPx;
     search.stepHalfWidthPx = stepHalfWidthPx;
+    search.minRelativeStrength = minRelativeStrength;
     auto fit = fitEdgeLine(photo, search);
     out.sideFitted[side] = fit.has_value();
     if (fit) {

@@ -25,8 +25,10 @@ struct RefinedSection {
 // the image edge within `searchPx`, keeping top and bottom through the horizontal
 // vanishing point and left and right through the vertical one, and intersects them.
 // A side with no edge keeps its coarse line and gives its corners low confidence.
+// `minRelativeStrength` as in EdgeSearch.
 RefinedSection refineCrossSection(const cv::Mat& photo, const Quad& coarse, glm::dvec3 horizontal,
-                                  glm::dvec3 vertical, double searchPx, double stepHalfWidthPx);
+                                  glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
+                                  double minRelativeStrength = 0.5);
 
 struct RefinedBoundary {
   glm::dvec2 direction{1, 0};  // unit, from the vanishing point outwards

@@ -9,14 +9,16 @@ namespace pw::metrology::detect {
 
 WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
   WorkingImage w;
+  // Shrink by a whole factor k: OpenCV's area resampling then averages exact k x k
+  // blocks (its fast path, several times quicker on 12 MP than a fractional factor),
+  // and pixel centres map exactly as u_working = (u_full + 0.5) / k - 0.5. The last
+  // (width mod k) columns and rows are left out of the working copy.
   const int longSide = std::max(photoBgr.cols, photoBgr.rows);
-  w.scale = longSide > maxSidePx ? static_cast<double>(maxSidePx) / longSide : 1.0;
-  if (w.scale < 1.0) {
-    const cv::Size size(std::max(1, static_cast<int>(std::lround(photoBgr.cols * w.scale))),
-                        std::max(1, static_cast<int>(std::lround(photoBgr.rows * w.scale))));
-    cv::resize(photoBgr, w.bgr, size, 0, 0, cv::INTER_AREA);
-    // The rounded size sets the true scale; use the horizontal one.
-    w.scale = static_cast<double>(size.width) / photoBgr.cols;
+  const int k = std::max(1, (longSide + maxSidePx - 1) / maxSidePx);
+  w.scale = 1.0 / k;
+  if (k > 1) {
+    const cv::Size size(photoBgr.cols / k, photoBgr.rows / k);
+    cv::resize(photoBgr(cv::Rect(0, 0, size.width * k, size.height * k)), w.bgr, size, 0, 0, cv::INTER_AREA);
   } else {
     w.bgr = photoBgr;
   }
@@ -43,6 +45,12 @@ WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
       oy[x] = py[x][best] * 0.125f;
     }
   }
+  const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
+  cv::Mat strong;
+  cv::compare(cv::abs(w.gradX), kEdgeGreyPerPx, strong, cv::CMP_GT);
+  cv::dilate(strong, w.edgeX, kernel);
+  cv::compare(cv::abs(w.gradY), kEdgeGreyPerPx, strong, cv::CMP_GT);
+  cv::dilate(strong, w.edgeY, kernel);
   return w;
 }
 
