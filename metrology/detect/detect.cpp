@@ -17,7 +17,7 @@ constexpr double kMinSegmentLengthOfDiagonal = 0.02;
 // A corridor's vanishing point has receding lines arriving from most directions
 // (floor, both walls, ceiling): below this (see estimateManhattanFrame) it is the
 // meeting point of a few unrelated lines.
-constexpr double kMinCorridorConfidence = 0.3;
+constexpr double kMinCorridorConfidence = 0.15;
 constexpr int kMinPhotoSidePx = 32;
 // Inlier segments of a true vanishing point agree with it to a degree or so (the
 // five test corridors: 0.2-1.1); a "point" fitted to unrelated lines does not.

@@ -3,7 +3,8 @@
 // confidence, ready to be written as a shot file and adjusted in the editor.
 //
 // Pipeline (each step in its own file):
-//   line_segments     LSD segments on a working copy (long side <= 1280 px)
+//   working_image     a copy shrunk by a whole factor to a long side <= 1280 px
+//   line_segments     LSD segments on it, in parallel bands
 //   vanishing_points  Manhattan frame by RANSAC on the Gaussian sphere, per-direction
 //                     least squares; focal length from two finite points, or given
 //   boundaries        the four receding boundaries from the angular profile around
@@ -11,7 +12,8 @@
 //   cross_sections    the far wall as the cross-section where the boundaries begin;
 //                     a marked cross-section (band, frame) nearer the camera
 //   edge_fit          every side and boundary refitted at full resolution to
-//                     sub-pixel precision; corners as intersections of fitted lines
+//                     sub-pixel precision; corners as intersections of fitted lines;
+//                     the boundaries then run through the fitted far-wall corners
 #pragma once
 
 #include <array>

@@ -19,6 +19,8 @@ struct LineSegment {
 // to full-resolution pixel centres: u = (u_scaled + 0.5) / scale - 0.5. Segments
 // shorter than `minLengthPx` (full resolution) are dropped. LSD's a-contrario test
 // keeps noise from producing segments, so a blank or noisy photo yields few or none.
+// Runs in horizontal bands on OpenCV's threads (a segment crossing a band's edge
+// comes back in two pieces).
 std::vector<LineSegment> detectLineSegments(const cv::Mat& gray, double scale, double minLengthPx);
 
 }  // namespace pw::metrology::detect
