@@ -101,6 +101,22 @@ float punctualIntensity(const Light& light) {
   return static_cast<float>(glm::pi<double>() * intensity * d * d / falloff);
 }
 
+void setIntensityFromPunctual(Light& light, float gltfIntensity) {
+  const double intensity = std::isfinite(gltfIntensity) ? std::max(0.0, static_cast<double>(gltfIntensity)) : 0.0;
+  if (light.type == LightType::kDirectional) {
+    light.intensity = static_cast<float>(std::min(1.0, intensity / glm::pi<double>()));
+    return;
+  }
+  light.intensity = intensity > 0.0 ? 1.0f : 0.0f;
+  light.attenuation = glm::vec3(0.0f, 0.0f, intensity > 0.0 ? static_cast<float>(glm::pi<double>() / intensity) : 1.0f);
+}
+
+float shininessFromRoughness(float roughness) {
+  const double r = std::clamp(std::isnan(roughness) ? 1.0 : static_cast<double>(roughness), 1e-3, 1.0);
+  const double exponent = 2.0 / (r * r * r * r) - 2.0;  // alpha^2 = r^4 = 2 / (n + 2)
+  return static_cast<float>(std::clamp(exponent / 128.0, 0.0, 1.0));
+}
+
 // VRML97 6.45: full intensity inside beamWidth, falling linearly in angle to zero at
 // cutOffAngle; beamWidth > cutOffAngle means a hard edge. KHR_lights_punctual falls
 // off between innerConeAngle and outerConeAngle and needs inner < outer <= pi/2, so
@@ -121,6 +137,15 @@ float linearFromSrgb(float encoded) {
 
 glm::vec3 linearFromSrgb(const glm::vec3& encoded) {
   return {linearFromSrgb(encoded.x), linearFromSrgb(encoded.y), linearFromSrgb(encoded.z)};
+}
+
+float srgbFromLinear(float linear) {
+  const float c = std::clamp(std::isnan(linear) ? 0.0f : linear, 0.0f, 1.0f);
+  return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+glm::vec3 srgbFromLinear(const glm::vec3& linear) {
+  return {srgbFromLinear(linear.x), srgbFromLinear(linear.y), srgbFromLinear(linear.z)};
 }
 
 double shortestDouble(float value) {

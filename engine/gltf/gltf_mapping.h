@@ -59,6 +59,16 @@ PerspectiveCamera perspectiveFromViewpoint(const Viewpoint& viewpoint, const Nav
 inline constexpr float kLightMatchDistanceM = 2.0f;
 float punctualIntensity(const Light& light);
 
+// The reverse, for reading glTF lights: sets intensity and attenuation of `light`
+// (whose type is set) so that punctualIntensity gives `gltfIntensity` back. Point
+// and spot lights become inverse-square VRML lights, intensity 1 and attenuation
+// (0, 0, pi / I): exact wherever VRML's attenuation is not clamped at 1, that is
+// beyond sqrt(I / pi) metres (1.8 m for 10 cd). Directional: I / pi, at most 1.
+void setIntensityFromPunctual(Light& light, float gltfIntensity);
+
+// The reverse of roughnessFromShininess (clamped to VRML's [0, 1]).
+float shininessFromRoughness(float roughness);
+
 // Spot cone angles for KHR_lights_punctual: 0 <= inner < outer <= pi/2.
 struct SpotCone {
   float innerRad = 0;
@@ -73,6 +83,9 @@ SpotCone spotCone(const Light& light);
 // keeps the colour a VRML browser showed. Clamps to [0, 1]; NaN becomes 0.
 float linearFromSrgb(float encoded);
 glm::vec3 linearFromSrgb(const glm::vec3& encoded);
+// The reverse, for reading glTF colours into the scene model.
+float srgbFromLinear(float linear);
+glm::vec3 srgbFromLinear(const glm::vec3& linear);
 
 // The double whose shortest decimal form is the float's shortest decimal form
 // (0.8f -> 0.8 rather than 0.800000011920929): readable JSON that reads back as the
