@@ -1,5 +1,6 @@
 // measureCorridor on synthetic cameras with known answers (general and seed).
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -209,6 +210,8 @@ void checkSigmaAgainstMonteCarlo(const SyntheticCorridor& c, Method method) {
     for (double x : v) sum += (x - mean) * (x - mean);
     return std::sqrt(sum / (v.size() - 1));
   };
+  std::printf("%s: Monte Carlo / predicted sigma: width %.3f height %.3f length %.3f\n", methodName(method),
+              sd(w) / predicted->sigma.widthM, sd(h) / predicted->sigma.heightM, sd(l) / predicted->sigma.lengthM);
   EXPECT_NEAR(sd(w) / predicted->sigma.widthM, 1.0, 0.15) << "width " << sd(w) << " vs " << predicted->sigma.widthM;
   EXPECT_NEAR(sd(h) / predicted->sigma.heightM, 1.0, 0.15) << "height " << sd(h) << " vs " << predicted->sigma.heightM;
   EXPECT_NEAR(sd(l) / predicted->sigma.lengthM, 1.0, 0.15) << "length " << sd(l) << " vs " << predicted->sigma.lengthM;
