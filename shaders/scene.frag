@@ -10,9 +10,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shader_interface.h"
 
+layout(constant_id = PW_SPEC_TEXTURED) const bool kTextured = false;
+layout(constant_id = PW_SPEC_LIT) const bool kLit = true;
+layout(constant_id = PW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
+
 layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHTS) readonly buffer LightBlock { LightGpu lights[]; };
-layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_SHAPES) readonly buffer ShapeBlock { ShapeGpu shapes[]; };
 layout(set = PW_SET_TEXTURE, binding = PW_BINDING_TEXTURE) uniform sampler2D shapeTexture;
 layout(push_constant) uniform PushBlock { DrawPushConstants draw; };
 
@@ -23,7 +26,35 @@ layout(location = 3) in vec4 inColor;
 
 layout(location = 0) out vec4 outColor;
 
-// The VRML97 spot factor (4.14.4): 1 inside beamWidth, 0 beyond cutOffAngle, linear between.
+// ambient_i + diffuse_i + specular_i for a unit vector L towards the light, times IL_i.
+vec3 lightSum(const vec3 color, const float intensity, const float ambientIntensity, const vec3 L, const vec3 N,
+              const vec3 V, const vec3 OD, const MaterialGpu m) {
+  const float nDotL = dot(N, L);
+  vec3 sum = ambientIntensity * OD * m.diffuseAmbient.a + intensity * OD * max(nDotL, 0.0);
+  // Most materials have no specular colour. The test is on a push constant, so it is a
+  // real branch on every device and those materials never pay for pow().
+  if (m.flags.y != 0u) {
+    const vec3 halfway = L + V;
+    const float halfLength = length(halfway);
+    const float nDotH = halfLength > 0.0 ? max(dot(N, halfway / halfLength), 0.0) : 0.0;
+    const float exponent = m.specularShininess.a;
+    const float highlight = exponent > 0.0 ? pow(nDotH, exponent) : 1.0;
+    sum += nDotL > 0.0 ? intensity * m.specularShininess.rgb * highlight : vec3(0.0);
+  }
+  return color * sum;
+}
+
+// Point and spot lights: L, d and the attenuation (0 beyond the radius).
+float pointAttenuation(const LightGpu light, const vec3 P, const vec3 N, out vec3 L) {
+  const vec3 toLight = light.positionType.xyz - P;
+  const float d = length(toLight);
+  L = d > 0.0 ? toLight / d : N;
+  const vec3 a = light.attenuationRadius.xyz;
+  return d > light.attenuationRadius.w ? 0.0 : 1.0 / max(a.x + a.y * d + a.z * d * d, 1.0);
+}
+
+// The VRML97 spot factor (4.14.4): 1 inside beamWidth, 0 beyond cutOffAngle, linear
+// in the angle between.
 float spotFactor(const LightGpu light, const vec3 L) {
   const float spotAngle = acos(clamp(dot(-L, light.directionAmbient.xyz), -1.0, 1.0));
   const float beamWidth = light.spot.x;
@@ -33,38 +64,39 @@ float spotFactor(const LightGpu light, const vec3 L) {
   return (spotAngle - cutOffAngle) / (beamWidth - cutOffAngle);
 }
 
-// One light's term of the sum above.
-vec3 lightTerm(const LightGpu light, const vec3 P, const vec3 N, const vec3 V, const vec3 OD,
-               const MaterialGpu m) {
-  const uint type = uint(light.positionType.w + 0.5);
-  vec3 L;
-  float attenuation = 1.0;
-  float spot = 1.0;
-  if (type == kLightDirectional) {
-    L = -light.directionAmbient.xyz;
-  } else {
-    const vec3 toLight = light.positionType.xyz - P;
-    const float d = length(toLight);
-    if (d > light.attenuationRadius.w) return vec3(0.0);  // beyond radius: no light at all
-    L = d > 0.0 ? toLight / d : N;
-    const vec3 a = light.attenuationRadius.xyz;
-    attenuation = 1.0 / max(a.x + a.y * d + a.z * d * d, 1.0);
-    if (type == kLightSpot) spot = spotFactor(light, L);
+vec3 litColor(const vec3 OD, const MaterialGpu m) {
+  vec3 N = normalize(inWorldNormal);
+  if ((m.flags.x & kMaterialTwoSided) != 0u && !gl_FrontFacing) N = -N;
+  const vec3 P = inWorldPosition;
+  const vec3 V = normalize(frame.cameraPosition.xyz - P);
+  vec3 color = m.emissiveAlpha.rgb;
+  // Lights are sorted by kind; the counts come from a uniform, so every loop is a real
+  // loop on every device, and a kind the scene lacks costs nothing.
+  uint i = 0u;
+  for (uint end = frame.lightCounts.x; i < end; ++i) {
+    const LightGpu light = lights[i];
+    color += lightSum(light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w,
+                      -light.directionAmbient.xyz, N, V, OD, m);
   }
-  const float intensity = light.colorIntensity.a;
-  vec3 sum = light.directionAmbient.w * OD * m.diffuseAmbient.a;  // ambient_i
-  const float nDotL = dot(N, L);
-  if (nDotL > 0.0) {
-    sum += intensity * OD * nDotL;
-    const vec3 halfway = L + V;
-    const float halfLength = length(halfway);
-    if (halfLength > 0.0) {
-      const float nDotH = max(dot(N, halfway / halfLength), 0.0);
-      const float exponent = m.specularShininess.a;
-      sum += intensity * m.specularShininess.rgb * (exponent > 0.0 ? pow(nDotH, exponent) : 1.0);
-    }
+  for (uint end = i + frame.lightCounts.y; i < end; ++i) {
+    const LightGpu light = lights[i];
+    vec3 L;
+    const float attenuation = pointAttenuation(light, P, N, L);
+    color += attenuation * lightSum(light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w, L, N,
+                                    V, OD, m);
   }
-  return attenuation * spot * light.colorIntensity.rgb * sum;
+  for (uint end = i + frame.lightCounts.z; i < end; ++i) {
+    const LightGpu light = lights[i];
+    vec3 L;
+    const float attenuation = pointAttenuation(light, P, N, L) * spotFactor(light, L);
+    color += attenuation * lightSum(light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w, L, N,
+                                    V, OD, m);
+  }
+  if (frame.lightCounts.w != 0u) {
+    // The headlight: a white directional light along the view, intensity 1, no ambient (6.29).
+    color += lightSum(vec3(1.0), 1.0, 0.0, -frame.headlightDirection.xyz, N, V, OD, m);
+  }
+  return color;
 }
 
 vec3 encodeSrgb(const vec3 linear) {
@@ -73,7 +105,7 @@ vec3 encodeSrgb(const vec3 linear) {
 }
 
 void main() {
-  const MaterialGpu m = shapes[draw.shapeIndex].material;
+  const MaterialGpu m = draw.material;
   const uint flags = m.flags.x;
   vec3 OD = m.diffuseAmbient.rgb;
   float alpha = m.emissiveAlpha.a;
@@ -81,34 +113,13 @@ void main() {
     OD = inColor.rgb;
     alpha *= inColor.a;
   }
-  if ((flags & kMaterialTextured) != 0u) {
+  if (kTextured) {
     const vec4 texel = texture(shapeTexture, inTexCoord);  // _SRGB format: already linear
     OD = texel.rgb;
     if ((flags & kMaterialTextureAlpha) != 0u) alpha = texel.a;
   }
-
-  vec3 color;
-  if ((flags & kMaterialUnlit) != 0u) {
-    color = OD;
-  } else {
-    vec3 N = normalize(inWorldNormal);
-    if ((flags & kMaterialTwoSided) != 0u && !gl_FrontFacing) N = -N;
-    const vec3 P = inWorldPosition;
-    const vec3 V = normalize(frame.cameraPosition.xyz - P);
-    color = m.emissiveAlpha.rgb;
-    for (uint i = 0u; i < frame.counts.x; ++i) color += lightTerm(lights[i], P, N, V, OD, m);
-    if (frame.headlightDirection.w > 0.5) {
-      // The headlight: a directional light along the view, intensity 1, white, no ambient (6.29).
-      LightGpu headlight;
-      headlight.colorIntensity = vec4(1.0);
-      headlight.positionType = vec4(0.0, 0.0, 0.0, float(kLightDirectional));
-      headlight.directionAmbient = vec4(frame.headlightDirection.xyz, 0.0);
-      headlight.attenuationRadius = vec4(1.0, 0.0, 0.0, 0.0);
-      headlight.spot = vec4(0.0);
-      color += lightTerm(headlight, P, N, V, OD, m);
-    }
-  }
+  vec3 color = kLit ? litColor(OD, m) : OD;
   color = clamp(color, 0.0, 1.0);
-  if (frame.counts.y != 0u) color = encodeSrgb(color);
+  if (kEncodeSrgb) color = encodeSrgb(color);
   outColor = vec4(color, clamp(alpha, 0.0, 1.0));
 }

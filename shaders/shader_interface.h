@@ -47,9 +47,16 @@ PW_SHADER_CONST uint kLightDirectional = 0u;
 PW_SHADER_CONST uint kLightPoint = 1u;
 PW_SHADER_CONST uint kLightSpot = 2u;
 
-// MaterialGpu.flags.x bits.
-PW_SHADER_CONST uint kMaterialUnlit = 1u;          // no Material node: colour at full intensity
-PW_SHADER_CONST uint kMaterialTextured = 2u;       // sample set 2's texture
+// Fragment-shader specialization constants (constant_id): each pipeline is compiled
+// for one combination, so that the CPU device (lavapipe), which runs both sides of
+// a branch it cannot prove uniform, never pays for texturing or lighting it skips.
+#define PW_SPEC_TEXTURED 0     // sample set 2's texture
+#define PW_SPEC_LIT 1          // VRML97 lighting; false: no Material, the colour at full intensity
+#define PW_SPEC_ENCODE_SRGB 2  // a UNORM target: the shader applies the sRGB curve itself
+
+// MaterialGpu.flags.x bits (decided per shape at run time: cheap either way).
+PW_SHADER_CONST uint kMaterialUnlit = 1u;          // no Material node (the pipeline is unlit too)
+PW_SHADER_CONST uint kMaterialTextured = 2u;       // has a texture (the pipeline samples it)
 PW_SHADER_CONST uint kMaterialTextureAlpha = 4u;   // the texture's alpha replaces 1 - transparency
 PW_SHADER_CONST uint kMaterialVertexColor = 8u;    // per-vertex colour replaces the diffuse colour
 PW_SHADER_CONST uint kMaterialTwoSided = 16u;      // solid FALSE: light the back face with -N
@@ -58,15 +65,16 @@ PW_SHADER_CONST uint kMaterialTwoSided = 16u;      // solid FALSE: light the bac
 struct FrameUniforms {
   mat4 viewProjection;     // world to Vulkan clip
   vec4 cameraPosition;     // xyz world metres
-  vec4 headlightDirection; // xyz: direction the light travels (the view direction); w: 1 on, 0 off
-  uvec4 counts;            // x: number of scene lights, y: 1 when the target is UNORM and the
-                           // shader must encode sRGB itself, z, w: unused
+  vec4 headlightDirection; // xyz: direction the light travels (the view direction)
+  uvec4 lightCounts;       // x: directional, y: point, z: spot lights, stored in that order in
+                           // the light buffer (one loop per kind, no per-light type branch);
+                           // w: 1 when the headlight is on
 };
 
 // Set 1, binding 0: the scene's lights in world space (VRML97 4.14.4, 6.17, 6.36, 6.45).
 struct LightGpu {
   vec4 colorIntensity;      // rgb linear colour, a: intensity
-  vec4 positionType;        // xyz: location (point, spot); w: kLight* as a float
+  vec4 positionType;        // xyz: location (point, spot); w: kLight* as a float (informative)
   vec4 directionAmbient;    // xyz: unit direction the light travels (directional, spot); w: ambientIntensity
   vec4 attenuationRadius;   // xyz: attenuation a0 a1 a2; w: radius in metres (point, spot)
   vec4 spot;                // x: beamWidth, y: cutOffAngle (radians, beamWidth <= cutOffAngle)
@@ -77,30 +85,37 @@ struct MaterialGpu {
   vec4 diffuseAmbient;      // rgb: diffuseColor (linear), a: ambientIntensity
   vec4 emissiveAlpha;       // rgb: emissiveColor (linear; unlit: the colour), a: 1 - transparency
   vec4 specularShininess;   // rgb: specularColor (linear), a: exponent = shininess * 128
-  uvec4 flags;              // x: kMaterial* bits
+  uvec4 flags;              // x: kMaterial* bits; y: 1 when specularColor is not black
 };
 
 // Set 1, binding 1: one per shape, indexed by the push constant.
 struct ShapeGpu {
   mat4 model;          // local to world
   mat4 normalMatrix;   // inverse transpose of the model's upper 3x3 (in a mat4 for layout)
-  MaterialGpu material;
 };
 
+// Per draw. The material travels here rather than in a buffer: push constants are
+// uniform, so the fragment shader's branches on its flags are real branches even on
+// lavapipe, and the per-pixel cost of fetching it from a storage buffer disappears.
 struct DrawPushConstants {
   uint shapeIndex;
+  uint padding0;
+  uint padding1;
+  uint padding2;
+  MaterialGpu material;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(FrameUniforms) == 112 && offsetof(FrameUniforms, cameraPosition) == 64 &&
-              offsetof(FrameUniforms, headlightDirection) == 80 && offsetof(FrameUniforms, counts) == 96);
+              offsetof(FrameUniforms, headlightDirection) == 80 && offsetof(FrameUniforms, lightCounts) == 96);
 static_assert(sizeof(LightGpu) == 80 && offsetof(LightGpu, positionType) == 16 &&
               offsetof(LightGpu, directionAmbient) == 32 && offsetof(LightGpu, attenuationRadius) == 48 &&
               offsetof(LightGpu, spot) == 64);
 static_assert(sizeof(MaterialGpu) == 64 && offsetof(MaterialGpu, emissiveAlpha) == 16 &&
               offsetof(MaterialGpu, specularShininess) == 32 && offsetof(MaterialGpu, flags) == 48);
-static_assert(sizeof(ShapeGpu) == 192 && offsetof(ShapeGpu, normalMatrix) == 64 && offsetof(ShapeGpu, material) == 128);
-static_assert(sizeof(DrawPushConstants) == 4);
+static_assert(sizeof(ShapeGpu) == 128 && offsetof(ShapeGpu, normalMatrix) == 64);
+static_assert(sizeof(DrawPushConstants) == 80 && offsetof(DrawPushConstants, material) == 16);
+static_assert(sizeof(DrawPushConstants) <= 128, "the smallest maxPushConstantsSize Vulkan allows");
 }  // namespace pw::engine::gpu
 #endif
 

@@ -66,7 +66,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   auto out = std::make_shared<GpuScene>();
   out->backgroundLinear = packed.backgroundLinear;
   out->headlight = scene.navigation.headlight;
-  out->lightCount = static_cast<uint32_t>(packed.lights.size());
+  out->lightCounts = packed.lightCounts;
 
   // Textures: the image size limit is the device's, so it is checked here.
   const uint32_t maxSide = context.properties().limits.maxImageDimension2D;

@@ -29,7 +29,7 @@ struct GpuScene {
   std::vector<DrawItem> transparent;
   glm::vec3 backgroundLinear{0.0f};
   bool headlight = true;  // the scene's NavigationInfo
-  uint32_t lightCount = 0;
+  glm::uvec3 lightCounts{0};  // directional, point, spot (the light buffer's order)
 
   Buffer vertices;
   Buffer indices;

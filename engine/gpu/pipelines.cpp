@@ -26,6 +26,10 @@ Result<OwnedShaderModule> makeShader(VkDevice device, std::span<const uint32_t> 
   return OwnedShaderModule(device, module);
 }
 
+bool isSrgbFormat(VkFormat f) {
+  return f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
+}
+
 constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 }  // namespace
@@ -38,7 +42,7 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
     if (!frame) return frame.error();
     lib->frameSetLayout_ = std::move(*frame);
     auto scene = makeSetLayout(device, {{PW_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-                                        {PW_BINDING_SHAPES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kGraphicsStages, nullptr}});
+                                        {PW_BINDING_SHAPES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
     if (!scene) return scene.error();
     lib->sceneSetLayout_ = std::move(*scene);
     auto texture = makeSetLayout(device, {{PW_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
@@ -87,9 +91,17 @@ Result<VkPipeline> PipelineLibrary::pipeline(VkFormat format, VkSampleCountFlagB
   const auto key = std::tuple(format, samples, variant.index());
   if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second.get();
 
+  // The fragment shader's specialization (shader_interface.h, PW_SPEC_*).
+  const VkBool32 constants[3] = {variant.textured ? VK_TRUE : VK_FALSE, variant.lit ? VK_TRUE : VK_FALSE,
+                                 isSrgbFormat(format) ? VK_FALSE : VK_TRUE};
+  static_assert(PW_SPEC_TEXTURED == 0 && PW_SPEC_LIT == 1 && PW_SPEC_ENCODE_SRGB == 2, "order of `constants`");
+  const VkSpecializationMapEntry entries[3] = {{PW_SPEC_TEXTURED, 0, sizeof(VkBool32)},
+                                               {PW_SPEC_LIT, sizeof(VkBool32), sizeof(VkBool32)},
+                                               {PW_SPEC_ENCODE_SRGB, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
+  const VkSpecializationInfo specialization{3, entries, sizeof(constants), constants};
   const VkPipelineShaderStageCreateInfo stages[] = {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertexShader_.get(), "main", nullptr},
-      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fragmentShader_.get(), "main", nullptr},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fragmentShader_.get(), "main", &specialization},
   };
   const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   const VkVertexInputAttributeDescription attributes[] = {

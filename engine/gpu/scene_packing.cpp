@@ -86,12 +86,16 @@ glm::mat3 normalMatrix(const glm::mat4& model) {
 Result<PackedScene> packScene(const Scene& scene) {
   PackedScene out;
   out.backgroundLinear = srgbToLinear(scene.backgroundColor);
-  for (const Light& light : scene.lights) {
-    if (!light.on) continue;
-    if (!finite(light.position) || !finite(light.color) || !std::isfinite(light.intensity)) {
-      return makeError("a light has a non-finite position, colour or intensity");
+  // Sorted by kind: the shader runs one loop per kind (see FrameUniforms::lightCounts).
+  for (const LightType type : {LightType::kDirectional, LightType::kPoint, LightType::kSpot}) {
+    for (const Light& light : scene.lights) {
+      if (!light.on || light.type != type) continue;
+      if (!finite(light.position) || !finite(light.color) || !std::isfinite(light.intensity)) {
+        return makeError("a light has a non-finite position, colour or intensity");
+      }
+      out.lights.push_back(packLight(light));
+      ++out.lightCounts[static_cast<int>(type)];
     }
-    out.lights.push_back(packLight(light));
   }
 
   struct MeshRange {
@@ -179,20 +183,23 @@ Result<PackedScene> packScene(const Scene& scene) {
     }
     if (!mesh.colors.empty()) flags |= kMaterialVertexColor;
     if (surface && !mesh.solid) flags |= kMaterialTwoSided;
-    m.flags = glm::uvec4(flags, 0, 0, 0);
+    const bool specular = glm::any(glm::greaterThan(glm::vec3(m.specularShininess), glm::vec3(0.0f)));
+    m.flags = glm::uvec4(flags, specular ? 1u : 0u, 0, 0);
 
     ShapeGpu gpuShape{};
     gpuShape.model = shape.transform;
     gpuShape.normalMatrix = glm::mat4(normalMatrix(shape.transform));
-    gpuShape.material = m;
 
     DrawItem draw;
     draw.shapeIndex = static_cast<uint32_t>(out.shapes.size());
+    draw.material = m;
     draw.firstIndex = packed->second.firstIndex;
     draw.indexCount = static_cast<uint32_t>(mesh.indices.size());
     draw.vertexOffset = packed->second.vertexOffset;
     draw.textureSlot = textureSlot;
     draw.variant.topology = mesh.topology;
+    draw.variant.textured = textureSlot != 0;
+    draw.variant.lit = (flags & kMaterialUnlit) == 0;
     // The texture's alpha replaces the material's transparency (VRML97 4.14.3, table 4.5).
     const bool alphaFromTexture = textureAlpha;
     draw.variant.blended = alphaFromTexture || m.emissiveAlpha.a < 1.0f ||

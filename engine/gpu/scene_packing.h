@@ -23,16 +23,20 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 48);
 
-// Pipelines differ only in topology and blending; culling and winding are dynamic state.
+// Pipelines differ in topology, blending and the fragment shader's specialization
+// (texturing, lighting); culling and winding are dynamic state.
 struct PipelineVariant {
   Topology topology = Topology::kTriangles;
-  bool blended = false;  // transparent: alpha blending, no depth writes, drawn back to front
-  int index() const { return static_cast<int>(topology) * 2 + (blended ? 1 : 0); }
-  static constexpr int kCount = 6;
+  bool blended = false;   // transparent: alpha blending, no depth writes, drawn back to front
+  bool textured = false;  // PW_SPEC_TEXTURED
+  bool lit = true;        // PW_SPEC_LIT
+  int index() const { return ((static_cast<int>(topology) * 2 + blended) * 2 + textured) * 2 + lit; }
+  static constexpr int kCount = 24;
 };
 
 struct DrawItem {
   uint32_t shapeIndex = 0;  // into PackedScene::shapes and the push constant
+  MaterialGpu material{};   // pushed with the draw
   uint32_t firstIndex = 0;
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
@@ -52,7 +56,8 @@ struct PackedScene {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
   std::vector<ShapeGpu> shapes;
-  std::vector<LightGpu> lights;                // only the lights that are on
+  std::vector<LightGpu> lights;                // the lights that are on: directional, point, spot
+  glm::uvec3 lightCounts{0};                   // how many of each kind, in that order
   std::vector<PackedTexture> textures;         // distinct Texture objects, in slot order
   std::vector<DrawItem> opaque;                // sorted by pipeline, texture, cull state
   std::vector<DrawItem> transparent;           // sorted per frame, back to front

@@ -27,7 +27,7 @@ struct SceneTargets {
   VkFormat format = VK_FORMAT_R8G8B8A8_SRGB;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkExtent2D extent{0, 0};
-  bool encodeSrgbInShader = false;  // a UNORM target: the shader applies the sRGB curve
+  bool encodeSrgbInShader = false;  // a UNORM target: the clear colour is encoded here (pipelines do it by format)
 };
 
 // Reused between frames so that recording allocates nothing once warmed up.

@@ -104,10 +104,10 @@ TEST(PackScene, NoMaterialMeansUnlitAndLinesUseTheEmissiveColour) {
   auto packed = packScene(scene);
   ASSERT_TRUE(packed.ok()) << packed.message();
   ASSERT_EQ(packed->shapes.size(), 2u);
-  EXPECT_TRUE(packed->shapes[0].material.flags.x & kMaterialUnlit);
-  EXPECT_EQ(glm::vec3(packed->shapes[0].material.diffuseAmbient), glm::vec3(1.0f));
-  EXPECT_TRUE(packed->shapes[1].material.flags.x & kMaterialUnlit);
-  EXPECT_NEAR(packed->shapes[1].material.diffuseAmbient.g, srgbToLinear(0.5f), 1e-6f);
+  EXPECT_TRUE(packed->opaque[0].material.flags.x & kMaterialUnlit);
+  EXPECT_EQ(glm::vec3(packed->opaque[0].material.diffuseAmbient), glm::vec3(1.0f));
+  EXPECT_TRUE(packed->opaque[1].material.flags.x & kMaterialUnlit);
+  EXPECT_NEAR(packed->opaque[1].material.diffuseAmbient.g, srgbToLinear(0.5f), 1e-6f);
   EXPECT_FALSE(packed->opaque[1].cullBackFaces);
 }
 
