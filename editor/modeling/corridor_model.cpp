@@ -127,7 +127,9 @@ SurfaceTexture cutTexture(const cv::Mat& photo, const Measurement& m, const Pane
   const cv::Matx33d pixelToPhoto = h * pixelToPlane;
 
   cv::Mat warped, inside;
-  cv::warpPerspective(photo, warped, cv::Mat(pixelToPhoto), {warpW, warpH}, cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+  // Bicubic: the renderer resamples the texture once more (bilinear, mipmapped), and
+  // two bilinear steps in a row blur thin lines (mortar, tile joints) visibly.
+  cv::warpPerspective(photo, warped, cv::Mat(pixelToPhoto), {warpW, warpH}, cv::INTER_CUBIC | cv::WARP_INVERSE_MAP,
                       cv::BORDER_REPLICATE);
   cv::warpPerspective(cv::Mat(photo.size(), CV_8U, cv::Scalar(255)), inside, cv::Mat(pixelToPhoto), {warpW, warpH},
                       cv::INTER_NEAREST | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT, cv::Scalar(0));

@@ -1,0 +1,101 @@
+// photowalk build: shots (photo + camera + corners) to a true-scale, textured,
+// walkable model in VRML97 (and glTF 2.0): one corridor, or a building of several.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "editor/command.h"
+#include "editor/pipeline.h"
+#include "engine/gltf/gltf_writer.h"
+#include "engine/vrml/vrml_writer.h"
+
+namespace pw::editor {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr const char* kUsage =
+    "usage: photowalk build SHOT.json [SHOT2.json ...] -o OUT.wrl [options]\n"
+    "       photowalk build --layout LAYOUT.json -o OUT.wrl [options]\n\n"
+    "Measures each shot, cuts the floor, ceiling, walls and far wall out of its photo as\n"
+    "true-scale textures and writes the model: OUT.wrl (or .wrl.gz) with the textures\n"
+    "beside it. Several shots without a layout are joined end to end; a layout file\n"
+    "places them and opens the walls between them (README: Layout files).\n\n"
+    "  -o, --output OUT.wrl  the model (written atomically)\n"
+    "  --layout LAYOUT.json  a building of several corridors\n"
+    "  --gltf OUT.glb        also write binary glTF 2.0 (.gltf: JSON with embedded data)\n"
+    "  --lit                 Materials, lights along the ceiling and the headlight (the\n"
+    "                        seed paper's rendering); default: photo-lit, the textures\n"
+    "                        carry the photo's own light and are drawn unlit\n"
+    "  --px-per-m N          texture resolution (default: the photo's own best on each plane)\n"
+    "  --jpeg                textures as JPEG instead of PNG\n"
+    "  --sigma-px S          corner standard deviation for the printed ± (default 1)\n";
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+int runBuild(Args& args) {
+  const auto output = args.value("--output", "-o");
+  const auto layoutPath = args.value("--layout");
+  const auto gltfPath = args.value("--gltf");
+  const auto pxPerMText = args.value("--px-per-m");
+  const auto sigmaText = args.value("--sigma-px");
+  modeling::ModelOptions options;
+  options.lit = args.flag("--lit");
+  engine::VrmlWriteOptions vrmlOptions;
+  vrmlOptions.jpegTextures = args.flag("--jpeg");
+  const std::vector<std::string> shots = args.positionals();
+  if (auto finished = args.finish(); !finished) return fail(finished.message());
+  if (!output) return fail("build needs -o OUT.wrl");
+  if (!endsWith(*output, ".wrl") && !endsWith(*output, ".wrl.gz") && !endsWith(*output, ".wrz")) {
+    return fail(*output + ": the model is VRML97: name it .wrl or .wrl.gz (use --gltf for glTF)");
+  }
+  if (layoutPath && !shots.empty()) return fail("give shot files or --layout, not both");
+  if (!layoutPath && shots.empty()) return fail("build needs a shot file (or --layout); see photowalk build --help");
+  if (pxPerMText) {
+    auto v = parseNumber(*pxPerMText, "--px-per-m");
+    if (!v) return fail(v.message());
+    if (*v < 1 || *v > 10000) return fail("--px-per-m must be between 1 and 10000");
+    options.pxPerM = *v;
+  }
+  metrology::MeasureOptions measureOptions;
+  if (sigmaText) {
+    auto v = parseNumber(*sigmaText, "--sigma-px");
+    if (!v) return fail(v.message());
+    if (*v < 0) return fail("--sigma-px must be >= 0");
+    measureOptions.cornerSigmaPx = *v;
+  }
+
+  modeling::Layout layout;
+  if (layoutPath) {
+    auto read = modeling::readLayoutFile(*layoutPath);
+    if (!read) return fail(read.message());
+    layout = std::move(*read);
+  } else {
+    layout = modeling::chainLayout(std::vector<fs::path>(shots.begin(), shots.end()));
+  }
+
+  auto model = buildModel(layout, options, measureOptions);
+  if (!model) return fail(model.message());
+
+  // Everything that can fail on the input has failed by now; write the files.
+  if (gltfPath) {
+    if (auto written = engine::writeGltf(model->scene, *gltfPath); !written) return fail(written.message());
+  }
+  if (auto written = engine::writeVrml(model->scene, *output, vrmlOptions); !written) return fail(written.message());
+
+  for (const modeling::CorridorModel& corridor : model->corridors) {
+    const auto& m = corridor.measurement;
+    std::printf("%s: width %.3f ± %.3f m, height %.3f ± %.3f m, length %.3f ± %.3f m\n", corridor.name.c_str(),
+                m.size.widthM, m.sigma.widthM, m.size.heightM, m.sigma.heightM, m.size.lengthM, m.sigma.lengthM);
+  }
+  std::printf("model: %s (%zu shapes, %zu viewpoints)%s%s\n", output->c_str(), model->scene.shapes.size(),
+              model->scene.viewpoints.size(), gltfPath ? ", glTF: " : "", gltfPath ? gltfPath->c_str() : "");
+  return kExitOk;
+}
+
+}  // namespace
+
+PW_COMMAND(build, "build", "photo(s) to a true-scale, textured, walkable model (VRML97, glTF)", kUsage, runBuild);
+
+}  // namespace pw::editor
