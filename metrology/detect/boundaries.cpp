@@ -61,10 +61,11 @@ class AngularProfile {
         count[bin] += 1;
       }
     }
-    // Prefix sums over two turns make any circular window one subtraction.
-    prefixSum_.assign(2 * kBins + 1, Features{});
-    prefixCount_.assign(2 * kBins + 1, 0.0);
-    for (int i = 0; i < 2 * kBins; ++i) {
+    // Prefix sums over three turns make any circular window around a bin of the
+    // middle turn one subtraction.
+    prefixSum_.assign(3 * kBins + 1, Features{});
+    prefixCount_.assign(3 * kBins + 1, 0.0);
+    for (int i = 0; i < 3 * kBins; ++i) {
       for (int c = 0; c < kChannels; ++c) prefixSum_[i + 1][c] = prefixSum_[i][c] + sum[i % kBins][c];
       prefixCount_[i + 1] = prefixCount_[i] + count[i % kBins];
     }
@@ -89,7 +90,8 @@ class AngularProfile {
   // when `colourOnly`: an edge's own gradient band (Sobel spreads it over three
   // pixels) would otherwise pull a narrow step towards the smoother side.
   double step(int bin, int window, bool colourOnly = false) const {
-    const int b = bin + kBins;  // into the second turn, so b - window >= 0
+    // Into the middle turn, so both b - window and b + window stay in the arrays.
+    const int b = (bin % kBins + kBins) % kBins + kBins;
     const double nl = count(b - window, b), nr = count(b, b + window);
     if (nl < 20 || nr < 20) return 0;
     double d2 = 0;
