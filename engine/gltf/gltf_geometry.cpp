@@ -53,12 +53,18 @@ Status checkMesh(const Mesh& mesh, const std::string& label) {
 // Unit normals, as glTF requires (3.7.2.1). A zero normal (from degenerate input)
 // takes the area-weighted normal of the triangles around the vertex instead.
 std::vector<glm::vec3> unitNormals(const Mesh& mesh) {
+  // Divide by the largest component first: squaring 1e30 would overflow to infinity.
+  auto unit = [](glm::vec3 n) -> std::optional<glm::vec3> {
+    const float largest = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+    if (!(largest > 0.0f) || !std::isfinite(largest)) return std::nullopt;
+    n /= largest;
+    return n / glm::length(n);
+  };
   std::vector<glm::vec3> normals(mesh.normals.size());
   std::vector<glm::vec3> smooth;
   for (size_t i = 0; i < normals.size(); ++i) {
-    const float length = glm::length(mesh.normals[i]);
-    if (length > 1e-20f && std::isfinite(length)) {
-      normals[i] = mesh.normals[i] / length;
+    if (const auto n = unit(mesh.normals[i])) {
+      normals[i] = *n;
       continue;
     }
     if (smooth.empty()) {
@@ -68,7 +74,8 @@ std::vector<glm::vec3> unitNormals(const Mesh& mesh) {
       computeSmoothNormals(copy);  // (0, 0, 1) where no triangle touches the vertex
       smooth = std::move(copy.normals);
     }
-    normals[i] = smooth[i];
+    // Triangles of astronomical size overflow even there: then any unit vector will do.
+    normals[i] = unit(smooth[i]).value_or(glm::vec3(0.0f, 0.0f, 1.0f));
   }
   return normals;
 }
@@ -197,8 +204,7 @@ Mesh mirroredInX(const Mesh& mesh) {
 std::optional<Mesh> bakeTransform(const Mesh& mesh, const glm::mat4& transform) {
   const glm::mat3 linear(transform);
   const float det = glm::determinant(linear);
-  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
-  const bool singular = !(std::abs(det) > 1e-12f * scale * scale * scale);
+  const bool singular = flattens(transform);
   if (singular && mesh.topology == Topology::kTriangles) return std::nullopt;
   Mesh baked = mesh;
   for (glm::vec3& p : baked.positions) {

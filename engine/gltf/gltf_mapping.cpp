@@ -58,6 +58,13 @@ std::optional<Trs> decomposeTrs(const glm::mat4& m) {
   return trs;
 }
 
+bool flattens(const glm::mat4& transform) {
+  const glm::mat3 linear(transform);
+  const float det = glm::determinant(linear);
+  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  return !(std::abs(det) > 1e-12f * scale * scale * scale);
+}
+
 PerspectiveCamera perspectiveFromViewpoint(const Viewpoint& viewpoint, const NavigationInfo& navigation) {
   PerspectiveCamera camera;
   // VRML97 6.53: fieldOfView is the angle across the smaller side of the view; glTF's
@@ -107,8 +114,10 @@ void setIntensityFromPunctual(Light& light, float gltfIntensity) {
     light.intensity = static_cast<float>(std::min(1.0, intensity / glm::pi<double>()));
     return;
   }
-  light.intensity = intensity > 0.0 ? 1.0f : 0.0f;
-  light.attenuation = glm::vec3(0.0f, 0.0f, intensity > 0.0 ? static_cast<float>(glm::pi<double>() / intensity) : 1.0f);
+  // Below 1e-30 cd nothing is lit; and pi / I must stay a finite float.
+  const bool lit = intensity > 1e-30;
+  light.intensity = lit ? 1.0f : 0.0f;
+  light.attenuation = glm::vec3(0.0f, 0.0f, lit ? static_cast<float>(glm::pi<double>() / intensity) : 1.0f);
 }
 
 float shininessFromRoughness(float roughness) {

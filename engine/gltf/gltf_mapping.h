@@ -45,6 +45,11 @@ struct Trs {
 // Recomposing the result reproduces `m` to within 1e-5 of its largest scale.
 std::optional<Trs> decomposeTrs(const glm::mat4& m);
 
+// Whether `transform` squashes space flat (|det| ~ 0 relative to its scale): faces
+// under it have no area and are not drawn; the writer and the reader both leave such
+// shapes out.
+bool flattens(const glm::mat4& transform);
+
 // glTF perspective camera from a VRML Viewpoint (VRML97 6.53) and the NavigationInfo
 // bound with it (6.29).
 struct PerspectiveCamera {

@@ -130,6 +130,11 @@ Status SceneBuilder::addNode(size_t index, const glm::mat4& parent, size_t depth
   auto local = localMatrix(node, where);
   if (!local) return local.error();
   const glm::mat4 world = parent * *local;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(world[c][r])) return source_.error(where + ": its world transform overflows (not finite)");
+    }
+  }
   std::string name;
   if (const Json* n = member(node, "name"); n && n->is_string()) name = n->get<std::string>();
 
@@ -169,10 +174,19 @@ Status SceneBuilder::addMeshShapes(const Json& meshIndex, const glm::mat4& world
     auto geometry = primitiveMesh(mesh, p, primitive, *look, at);
     if (!geometry) return geometry.error();
     if (!*geometry) continue;  // nothing drawable
+    if ((*geometry)->topology == Topology::kTriangles && flattens(world)) {
+      source_.warn(at + ": placed by " + where + " with no area (a zero scale); left out");
+      continue;
+    }
     Shape shape;
     shape.mesh = *geometry;
     shape.appearance = look->appearance;
     shape.transform = world;
+    const Bounds bounds = worldBounds(shape);
+    if (!std::isfinite(bounds.min.x + bounds.min.y + bounds.min.z + bounds.max.x + bounds.max.y + bounds.max.z) ||
+        !std::isfinite(glm::length(bounds.size()))) {
+      return source_.error(at + ": placed by " + where + ", its vertices overflow (not finite)");
+    }
     shape.name = primitives->size() > 1 && !name.empty() ? name + "_" + std::to_string(p) : name;
     scene_.shapes.push_back(std::move(shape));
   }

@@ -148,3 +148,37 @@ TEST(GltfMapping, DefaultTexCoordsFollowTheBoundingBox) {
 
 }  // namespace
 }  // namespace pw::engine::gltf
+
+namespace pw::engine::gltf {
+namespace {
+
+TEST(GltfMapping, ReadingInvertsWriting) {
+  for (float x : {0.0f, 0.05f, 0.2f, 0.5f, 0.9f, 1.0f}) {
+    EXPECT_NEAR(shininessFromRoughness(roughnessFromShininess(x)), x, 1e-4f) << x;
+    EXPECT_NEAR(srgbFromLinear(linearFromSrgb(x)), x, 1e-5f) << x;
+  }
+  for (LightType type : {LightType::kDirectional, LightType::kPoint, LightType::kSpot}) {
+    for (float candela : {0.5f, 3.0f, 12.0f}) {
+      Light light;
+      light.type = type;
+      setIntensityFromPunctual(light, candela);
+      // VRML intensity stops at 1: a directional light brighter than pi lux saturates.
+      const float expected = type == LightType::kDirectional ? std::min(candela, glm::pi<float>()) : candela;
+      EXPECT_NEAR(punctualIntensity(light), expected, 1e-4f * candela);
+    }
+  }
+  Light faint;
+  setIntensityFromPunctual(faint, 1e-40f);  // pi / I would overflow: the light is off
+  EXPECT_EQ(faint.intensity, 0.0f);
+  EXPECT_TRUE(std::isfinite(faint.attenuation.z));
+}
+
+TEST(GltfMapping, FlatteningTransforms) {
+  EXPECT_FALSE(flattens(glm::mat4(1.0f)));
+  EXPECT_FALSE(flattens(glm::scale(glm::mat4(1.0f), glm::vec3(1e-3f, 1e3f, 1.0f))));
+  EXPECT_TRUE(flattens(glm::scale(glm::mat4(1.0f), glm::vec3(1, 0, 1))));
+  EXPECT_TRUE(flattens(glm::mat4(0.0f)));
+}
+
+}  // namespace
+}  // namespace pw::engine::gltf
