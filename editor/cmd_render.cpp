@@ -1,10 +1,13 @@
 // photowalk render: one frame of a scene to a PNG, offscreen (lavapipe when there is no GPU).
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <string>
 
 #include "editor/command.h"
 #include "editor/model_io.h"
+#include "editor/modeling/corridor_model.h"
+#include "editor/pipeline.h"
 #include "engine/gpu/renderer.h"
 #include "engine/scene/camera.h"
 
@@ -12,13 +15,19 @@ namespace pw::editor {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: photowalk render SCENE -o OUT.png [--size WxH] [--viewpoint N] [--cpu] [--msaa N]\n\n"
+    "usage: photowalk render SCENE -o OUT.png [--size WxH] [--viewpoint N|NAME] [--camera-from SHOT.json]\n"
+    "                        [--cpu] [--msaa N]\n\n"
     "Renders SCENE (a model file, or 'sample' for the built-in room) from one of its\n"
     "viewpoints into a PNG (or .jpg), with the VRML97 lighting model.\n\n"
     "  -o, --output OUT.png  where the frame goes (written atomically)\n"
     "  --size WxH            frame size in pixels (default 1280x720)\n"
-    "  --viewpoint N         the scene's Nth viewpoint, from 1 (default 1; a scene\n"
-    "                        without viewpoints is seen whole from +Z)\n"
+    "  --viewpoint N|NAME    the scene's Nth viewpoint, from 1, or the one with that\n"
+    "                        description (default 1; a scene without viewpoints is\n"
+    "                        seen whole from +Z)\n"
+    "  --camera-from SHOT    the camera that took the shot's photo, as measured, with its\n"
+    "                        focal length and principal point, at the photo's size (unless\n"
+    "                        --size): the frame lines up with the photo pixel for pixel when\n"
+    "                        SCENE was built from that shot (its first corridor)\n"
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "                        (as PW_DEVICE=cpu)\n"
     "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n";
@@ -36,6 +45,7 @@ int runRender(Args& args) {
   const auto output = args.value("--output", "-o");
   const auto sizeText = args.value("--size");
   const auto viewpointText = args.value("--viewpoint");
+  const auto cameraFrom = args.value("--camera-from");
   const auto msaaText = args.value("--msaa");
   engine::RendererOptions options;
   options.forceCpu = args.flag("--cpu");
@@ -55,24 +65,52 @@ int runRender(Args& args) {
     if (!msaa) return fail(msaa.message());
     options.msaaSamples = *msaa;
   }
-  int viewpoint = 1;
-  if (viewpointText) {
-    auto parsed = parsePositiveInt(*viewpointText, "--viewpoint");
-    if (!parsed) return fail(parsed.message());
-    viewpoint = *parsed;
-  }
-
   std::vector<std::string> warnings;
   auto scene = loadModel(positionals[0], &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (!scene) return fail(scene.message());
-  const size_t viewpointCount = scene->viewpoints.size();
-  if (viewpointCount == 0 ? viewpoint != 1 : size_t(viewpoint) > viewpointCount) {
-    return fail("--viewpoint " + std::to_string(viewpoint) + " is out of range: " + positionals[0] + " has " +
-                std::to_string(viewpointCount) + " viewpoint" + (viewpointCount == 1 ? "" : "s"));
+  if (viewpointText && cameraFrom) return fail("give --viewpoint or --camera-from, not both");
+  engine::Camera camera;
+  if (cameraFrom) {
+    // The shot's measured camera, placed as `build` placed its corridor (the first).
+    auto measured = measureShotFile(*cameraFrom);
+    if (!measured) return fail(measured.message());
+    camera = modeling::photoCamera(measured->measurement, glm::dmat4(1.0));
+    if (!sizeText) size = {measured->loaded.image.cols, measured->loaded.image.rows};
+    if (size != std::pair{measured->loaded.image.cols, measured->loaded.image.rows}) {
+      // Keep the photo's field of view and principal point in proportion.
+      const double scale = static_cast<double>(size.first) / measured->loaded.image.cols;
+      auto& k = *camera.intrinsics;
+      k.focalXPx *= scale;
+      k.focalYPx *= static_cast<double>(size.second) / measured->loaded.image.rows;
+      k.principalU = (k.principalU + 0.5) * scale - 0.5;
+      k.principalV = (k.principalV + 0.5) * size.second / measured->loaded.image.rows - 0.5;
+    }
+  } else {
+    const size_t count = scene->viewpoints.size();
+    size_t index = 0;
+    if (viewpointText) {
+      const auto byName = std::find_if(scene->viewpoints.begin(), scene->viewpoints.end(),
+                                       [&](const engine::Viewpoint& v) { return v.description == *viewpointText; });
+      if (byName != scene->viewpoints.end()) {
+        index = static_cast<size_t>(byName - scene->viewpoints.begin());
+      } else {
+        auto number = parsePositiveInt(*viewpointText, "--viewpoint");
+        if (!number) {
+          std::string names;
+          for (const auto& v : scene->viewpoints) names += (names.empty() ? "" : ", ") + ("\"" + v.description + "\"");
+          return fail("--viewpoint " + *viewpointText + ": no viewpoint of that name or number in " + positionals[0] +
+                      (names.empty() ? " (it has none)" : " (it has " + names + ")"));
+        }
+        if (count == 0 ? *number != 1 : size_t(*number) > count) {
+          return fail("--viewpoint " + std::to_string(*number) + " is out of range: " + positionals[0] + " has " +
+                      std::to_string(count) + " viewpoint" + (count == 1 ? "" : "s"));
+        }
+        index = size_t(*number - 1);
+      }
+    }
+    camera = engine::cameraFromViewpoint(count == 0 ? engine::defaultViewpoint(*scene) : scene->viewpoints[index]);
   }
-  const engine::Camera camera = engine::cameraFromViewpoint(
-      viewpointCount == 0 ? engine::defaultViewpoint(*scene) : scene->viewpoints[size_t(viewpoint - 1)]);
 
   auto renderer = engine::Renderer::create(options);
   if (!renderer) return fail(renderer.message());

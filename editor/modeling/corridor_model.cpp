@@ -77,7 +77,7 @@ double photoNearExtent(const Measurement& m, const CorridorBox& box, int width, 
         any = visibleInPhoto(h, s, t, width, height);
       }
       if (!any) break;
-      best = z;
+      best = std::max(best, z);
     }
   }
   return best;
