@@ -3,7 +3,8 @@
 // the same run:
 //   stb PNGs    embedding through engine/scene's encodePng (stb_image_write) on one
 //               thread, plus an atomic write as large as the .glb;
-//   copy+write  for geometry only: copying the vertex arrays once and writing them.
+//   copy+write  for geometry only: copying the vertex arrays once and writing them;
+//   stb decode  for reading: decoding the embedded PNGs, which any reader must do.
 // Prints the median of several interleaved runs of each, in milliseconds.
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "base/atomic_file.h"
+#include "engine/gltf/gltf_reader.h"
 #include "engine/gltf/gltf_writer.h"
 #include "engine/gltf/png_encoder.h"
 #include "engine/scene/image.h"
@@ -157,6 +159,8 @@ int main() {
     ourBytes += gltf::encodeTexturePng(*image)->size();
   }
   const std::string filler(glbBytes->size(), 'x');
+  std::vector<std::vector<uint8_t>> pngs;
+  for (const Image* image : images) pngs.push_back(*gltf::encodeTexturePng(*image));
   const Mesh& big = *geometry.shapes.back().mesh;
 
   const std::vector<double> ms = interleavedMediansMs(kRounds, {
@@ -185,6 +189,9 @@ int main() {
         append(big.indices);
         if (!writeFileAtomic(dir / "floor.bin", std::span<const char>(copy.data(), copy.size()))) std::abort();
       },
+      [&] { if (!parseGltf(*glbBytes, {}, "corridor.glb")) std::abort(); },
+      // Baseline 3: decoding the same PNGs with stb (what any reader must do).
+      [&] { for (const auto& png : pngs) if (!decodeImage(png.data(), png.size(), "png")) std::abort(); },
   });
 
   std::printf("median of %d interleaved rounds, ms (%u hardware threads):\n", kRounds, std::thread::hardware_concurrency());
@@ -196,5 +203,7 @@ int main() {
               ms[4] / ms[3]);
   std::printf("  writeGltf .glb, geometry only            %8.1f  (%.1f MB)\n", ms[5], geometryBytes->size() / 1e6);
   std::printf("  baseline: copy arrays + write            %8.1f  -> writeGltf takes %.2fx\n", ms[6], ms[5] / ms[6]);
+  std::printf("  parseGltf .glb, textures + mesh          %8.1f\n", ms[7]);
+  std::printf("  baseline: stb decode of its PNGs         %8.1f  -> parseGltf takes %.2fx\n", ms[8], ms[7] / ms[8]);
   return 0;
 }

@@ -1,10 +1,13 @@
 // The reader's scene layer: nodes, meshes, materials, textures, cameras and lights
 // of a loaded glTF document become the scene model (mappings: gltf_mapping.h).
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <numeric>
 #include <set>
+#include <system_error>
+#include <thread>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -61,6 +64,94 @@ Result<std::vector<uint32_t>> listIndices(const Source& source, int mode, std::v
   }
 }
 
+struct DecodedImage {
+  std::shared_ptr<const Image> image;  // null when it could not be read (warned)
+  std::string url;                     // the file it came from, or its name
+};
+
+// Decodes every image that a material's baseColorTexture uses, on all cores: PNG and
+// JPEG decoding is most of the reader's time on a textured model (bench/gltf_bench.cpp).
+std::map<size_t, DecodedImage> decodeUsedImages(const Source& source) {
+  std::set<size_t> used;
+  const Json* materials = member(source.doc, "materials");
+  const Json* textures = member(source.doc, "textures");
+  if (materials && materials->is_array() && textures && textures->is_array()) {
+    for (const Json& material : *materials) {
+      const Json* pbr = member(material, "pbrMetallicRoughness");
+      const Json* info = pbr ? member(*pbr, "baseColorTexture") : nullptr;
+      const Json* index = info ? member(*info, "index") : nullptr;
+      if (!index || !index->is_number_unsigned() || index->get<size_t>() >= textures->size()) continue;
+      const Json* image = member((*textures)[index->get<size_t>()], "source");
+      if (image && image->is_number_unsigned()) used.insert(image->get<size_t>());
+    }
+  }
+  struct Job {
+    size_t index;
+    std::string where;
+    std::vector<uint8_t> owned;
+    std::span<const uint8_t> bytes;
+    Result<Image> result = makeError("not decoded");
+  };
+  std::vector<Job> jobs;
+  std::map<size_t, DecodedImage> out;
+  for (size_t index : used) {
+    Job job{index, indexed("images", index), {}, {}};
+    DecodedImage& entry = out[index];
+    auto imageJson = element(source, "images", Json(index), "a texture");
+    if (!imageJson) {
+      source.warn(imageJson.message() + "; drawn without it");
+      continue;
+    }
+    if (const Json* uri = member(**imageJson, "uri"); uri && uri->is_string()) {
+      auto bytes = resolveUri(source, uri->get<std::string>(), job.where);
+      if (!bytes) {
+        source.warn(bytes.message() + "; drawn without the texture");
+        continue;
+      }
+      job.owned = std::move(*bytes);
+      job.bytes = job.owned;
+      if (uri->get<std::string>().rfind("data:", 0) != 0) entry.url = uri->get<std::string>();
+    } else if (const Json* view = member(**imageJson, "bufferView")) {
+      auto bytes = bufferViewBytes(source, *view, job.where);
+      if (!bytes) {
+        source.warn(bytes.message() + "; drawn without the texture");
+        continue;
+      }
+      job.bytes = *bytes;
+    } else {
+      source.warn(job.where + ": has neither uri nor bufferView; drawn without it");
+      continue;
+    }
+    if (const Json* n = member(**imageJson, "name"); entry.url.empty() && n && n->is_string()) entry.url = n->get<std::string>();
+    jobs.push_back(std::move(job));
+  }
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < jobs.size(); i = next++) {
+      jobs[i].result = decodeImage(jobs[i].bytes.data(), jobs[i].bytes.size(), source.name + ": " + jobs[i].where);
+    }
+  };
+  std::vector<std::thread> helpers;
+  const size_t threads = std::min<size_t>(jobs.size(), std::max(1u, std::thread::hardware_concurrency()));
+  for (size_t t = 1; t < threads; ++t) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // the calling thread does the rest
+    }
+  }
+  work();
+  for (std::thread& helper : helpers) helper.join();
+  for (Job& job : jobs) {
+    if (job.result) {
+      out[job.index].image = std::make_shared<const Image>(std::move(*job.result));
+    } else {
+      source.warn(job.result.message() + "; drawn without it");
+    }
+  }
+  return out;
+}
+
 class SceneBuilder {
  public:
   explicit SceneBuilder(const Source& source) : source_(source) {}
@@ -94,6 +185,7 @@ class SceneBuilder {
   std::map<int, Look> looks_;  // -1: the default material
   std::map<std::pair<size_t, bool>, std::shared_ptr<const Texture>> textures_;
   std::map<std::pair<size_t, bool>, std::shared_ptr<const Image>> images_;
+  std::map<size_t, DecodedImage> decoded_;  // every image a material uses, decoded up front
 };
 
 Result<glm::mat4> SceneBuilder::localMatrix(const Json& node, const std::string& where) {
@@ -258,6 +350,9 @@ Result<std::shared_ptr<const Mesh>> SceneBuilder::primitiveMesh(size_t meshIndex
   }
   auto mode = numberOr(source_, primitive, "mode", 4, where);
   if (!mode) return mode.error();
+  if (!(*mode >= 0 && *mode <= 6 && *mode == std::floor(*mode))) {
+    return source_.error(where + ": unknown primitive mode " + std::to_string(*mode));
+  }
   auto listed = listIndices(source_, static_cast<int>(*mode), std::move(indices), &mesh.topology, where);
   if (!listed) return listed.error();
   mesh.indices = std::move(*listed);
@@ -272,7 +367,10 @@ Result<std::shared_ptr<const Mesh>> SceneBuilder::primitiveMesh(size_t meshIndex
 }
 
 Result<SceneBuilder::Look> SceneBuilder::lookFor(const Json* materialIndex, const std::string& where) {
-  const int key = materialIndex && materialIndex->is_number_unsigned() ? static_cast<int>(std::min<size_t>(materialIndex->get<size_t>(), INT32_MAX)) : -1;
+  if (materialIndex && !materialIndex->is_number_unsigned()) {
+    return source_.error(where + ": material " + materialIndex->dump() + " is not an index");
+  }
+  const int key = materialIndex ? static_cast<int>(std::min<size_t>(materialIndex->get<size_t>(), INT32_MAX)) : -1;
   if (auto found = looks_.find(key); found != looks_.end()) return found->second;
   Look look;
   auto appearance = std::make_shared<Appearance>();
@@ -346,46 +444,36 @@ std::shared_ptr<const Texture> SceneBuilder::textureFor(const Json& textureInfo,
   if (auto found = textures_.find(key); found != textures_.end()) return found->second;
   std::shared_ptr<Texture> texture;
   auto textureJson = element(source_, "textures", *index, where);
-  const Json* imageIndex = textureJson ? member(**textureJson, "source") : nullptr;
+  if (!textureJson) {
+    source_.warn(textureJson.message() + "; drawn without it");
+    textures_[key] = nullptr;
+    return nullptr;
+  }
+  const Json* imageIndex = member(**textureJson, "source");
   if (!imageIndex || !imageIndex->is_number_unsigned()) {
     source_.warn(where + ": its texture has no image (or only an extension's); drawn without it");
     textures_[key] = nullptr;
     return nullptr;
   }
   const auto imageKey = std::make_pair(imageIndex->get<size_t>(), opaque);
-  std::shared_ptr<const Image> image = images_.count(imageKey) ? images_[imageKey] : nullptr;
   std::string url;
+  if (auto found = decoded_.find(imageIndex->get<size_t>()); found != decoded_.end()) url = found->second.url;
   if (!images_.count(imageKey)) {
-    const std::string at = indexed("images", imageIndex->get<size_t>());
-    auto imageJson = element(source_, "images", *imageIndex, where);
-    Result<std::vector<uint8_t>> bytes = makeError("no image data");
-    if (imageJson) {
-      if (const Json* uri = member(**imageJson, "uri"); uri && uri->is_string()) {
-        bytes = resolveUri(source_, uri->get<std::string>(), at);
-        if (uri->get<std::string>().rfind("data:", 0) != 0) url = uri->get<std::string>();
-      } else if (const Json* view = member(**imageJson, "bufferView")) {
-        auto span = bufferViewBytes(source_, *view, at);
-        bytes = span ? Result<std::vector<uint8_t>>(std::vector<uint8_t>(span->begin(), span->end()))
-                     : Result<std::vector<uint8_t>>(span.error());
+    std::shared_ptr<const Image> decoded;
+    if (auto found = decoded_.find(imageIndex->get<size_t>()); found != decoded_.end()) decoded = found->second.image;
+    // OPAQUE ignores the alpha channel (glTF 2.0, 3.9.4); VRML would blend with it.
+    if (decoded && opaque) {
+      bool translucent = false;
+      for (size_t i = 3; i < decoded->rgba.size() && !translucent; i += 4) translucent = decoded->rgba[i] != 255;
+      if (translucent) {
+        Image copy = *decoded;
+        for (size_t i = 3; i < copy.rgba.size(); i += 4) copy.rgba[i] = 255;
+        decoded = std::make_shared<const Image>(std::move(copy));
       }
-      if (const Json* n = member(**imageJson, "name"); url.empty() && n && n->is_string()) url = n->get<std::string>();
     }
-    if (bytes) {
-      auto decoded = decodeImage(bytes->data(), bytes->size(), source_.name + ": " + at);
-      if (decoded) {
-        // OPAQUE ignores the alpha channel (glTF 2.0, 3.9.4); VRML would blend with it.
-        if (opaque) {
-          for (size_t i = 3; i < decoded->rgba.size(); i += 4) decoded->rgba[i] = 255;
-        }
-        image = std::make_shared<const Image>(std::move(*decoded));
-      } else {
-        source_.warn(decoded.message() + "; drawn without it");
-      }
-    } else {
-      source_.warn(bytes.message() + "; drawn without the texture");
-    }
-    images_[imageKey] = image;
+    images_[imageKey] = decoded;
   }
+  const std::shared_ptr<const Image> image = images_[imageKey];
   if (image) {
     texture = std::make_shared<Texture>();
     texture->image = image;
@@ -393,10 +481,10 @@ std::shared_ptr<const Texture> SceneBuilder::textureFor(const Json& textureInfo,
     if (const Json* samplerIndex = member(**textureJson, "sampler")) {
       if (auto sampler = element(source_, "samplers", *samplerIndex, where)) {
         // Mirrored repeat has no VRML form; plain repeat is nearest.
-        if (const Json* s = member(**sampler, "wrapS"); s && s->is_number() && s->get<int>() == kWrapClampToEdge) {
+        if (const Json* s = member(**sampler, "wrapS"); s && s->is_number_unsigned() && s->get<size_t>() == kWrapClampToEdge) {
           texture->wrapS = TextureWrap::kClamp;
         }
-        if (const Json* t = member(**sampler, "wrapT"); t && t->is_number() && t->get<int>() == kWrapClampToEdge) {
+        if (const Json* t = member(**sampler, "wrapT"); t && t->is_number_unsigned() && t->get<size_t>() == kWrapClampToEdge) {
           texture->wrapT = TextureWrap::kClamp;
         }
       }
@@ -515,6 +603,7 @@ Result<Scene> SceneBuilder::build() {
       if (!children.count(i)) roots.push_back(i);
     }
   }
+  decoded_ = decodeUsedImages(source_);
   for (size_t root : roots) PW_TRY(addNode(root, glm::mat4(1.0f), 0));
   if (const Json* asset = member(source_.doc, "asset")) {
     const Json* extras = member(*asset, "extras");

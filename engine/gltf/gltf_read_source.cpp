@@ -195,7 +195,9 @@ Result<double> numberOr(const Source& source, const Json& object, const char* ke
                         const std::string& where) {
   const Json* value = member(object, key);
   if (!value) return fallback;
-  if (!value->is_number() || !std::isfinite(value->get<double>())) {
+  // Within float range too: the scene model is float, and converting a larger double
+  // to float is undefined behaviour.
+  if (!value->is_number() || !(std::abs(value->get<double>()) <= std::numeric_limits<float>::max())) {
     return source.error(where + ": " + key + " is not a finite number");
   }
   return value->get<double>();
@@ -210,7 +212,7 @@ Result<std::vector<double>> numbersOr(const Source& source, const Json& object, 
   }
   std::vector<double> numbers;
   for (const Json& n : *value) {
-    if (!n.is_number() || !std::isfinite(n.get<double>())) {
+    if (!n.is_number() || !(std::abs(n.get<double>()) <= std::numeric_limits<float>::max())) {
       return source.error(where + ": " + key + " holds something that is not a finite number");
     }
     numbers.push_back(n.get<double>());
