@@ -93,10 +93,24 @@ engine::Image toImage(const cv::Mat& bgr) {
   return image;
 }
 
+// The photo at full size and halved again and again (Gaussian pyramid): a texture
+// coarser than the photo is cut from the level nearest its resolution, so shrinking
+// neither aliases nor costs a warp at the photo's full resolution.
+std::vector<cv::Mat> photoPyramid(const cv::Mat& photo) {
+  std::vector<cv::Mat> levels{photo};
+  while (levels.size() < 6 && std::min(levels.back().cols, levels.back().rows) > 256) {
+    cv::Mat next;
+    cv::pyrDown(levels.back(), next);
+    levels.push_back(next);
+  }
+  return levels;
+}
+
 // Cuts one surface's texture out of the photo; fills what the photo does not show
 // with the mean colour of what it does.
-SurfaceTexture cutTexture(const cv::Mat& photo, const Measurement& m, const Panel& panel, const ModelOptions& options,
-                          glm::vec3& meanColor) {
+SurfaceTexture cutTexture(const std::vector<cv::Mat>& pyramid, const Measurement& m, const Panel& panel,
+                          const ModelOptions& options, glm::vec3& meanColor) {
+  const cv::Mat& photo = pyramid.front();
   SurfaceTexture out;
   out.rect = panel.extent;
   const Rect& r = panel.extent;
@@ -117,34 +131,34 @@ SurfaceTexture cutTexture(const cv::Mat& photo, const Measurement& m, const Pane
   const int texW = std::max(2, static_cast<int>(std::lround(widthM * pxPerM)));
   const int texH = std::max(2, static_cast<int>(std::lround(heightM * pxPerM)));
 
-  // Where the texture is smaller than the photo (capped resolution), warp at a higher
-  // resolution and average down, so that shrinking does not alias.
-  const int supersample = std::clamp(static_cast<int>(std::ceil(photoScale / pxPerM - 0.2)), 1, 3);
-  const int warpW = texW * supersample, warpH = texH * supersample;
-  // Warp pixel (x, y) -> (s, t): pixel centres, rows top (t1) to bottom (t0).
-  const cv::Matx33d pixelToPlane(widthM / warpW, 0, r.s0 + 0.5 * widthM / warpW, 0, -heightM / warpH,
-                                 r.t1 - 0.5 * heightM / warpH, 0, 0, 1);
-  const cv::Matx33d pixelToPhoto = h * pixelToPlane;
+  // Pyramid level L holds pixel centres at (u + 0.5) / 2^L - 0.5.
+  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0, photoScale / pxPerM)))), 0,
+                               static_cast<int>(pyramid.size()) - 1);
+  const double k = 1.0 / (1 << level);
+  const cv::Matx33d toLevel(k, 0, 0.5 * k - 0.5, 0, k, 0.5 * k - 0.5, 0, 0, 1);
+  // Texture pixel (x, y) -> (s, t): pixel centres, rows top (t1) to bottom (t0).
+  const cv::Matx33d pixelToPlane(widthM / texW, 0, r.s0 + 0.5 * widthM / texW, 0, -heightM / texH,
+                                 r.t1 - 0.5 * heightM / texH, 0, 0, 1);
+  const cv::Matx33d pixelToPhoto = toLevel * h * pixelToPlane;
+  const cv::Mat& source = pyramid[level];
 
   cv::Mat warped, inside;
   // Bicubic: the renderer resamples the texture once more (bilinear, mipmapped), and
   // two bilinear steps in a row blur thin lines (mortar, tile joints) visibly.
-  cv::warpPerspective(photo, warped, cv::Mat(pixelToPhoto), {warpW, warpH}, cv::INTER_CUBIC | cv::WARP_INVERSE_MAP,
+  cv::warpPerspective(source, warped, cv::Mat(pixelToPhoto), {texW, texH}, cv::INTER_CUBIC | cv::WARP_INVERSE_MAP,
                       cv::BORDER_REPLICATE);
-  cv::warpPerspective(cv::Mat(photo.size(), CV_8U, cv::Scalar(255)), inside, cv::Mat(pixelToPhoto), {warpW, warpH},
+  cv::warpPerspective(cv::Mat(source.size(), CV_8U, cv::Scalar(255)), inside, cv::Mat(pixelToPhoto), {texW, texH},
                       cv::INTER_NEAREST | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT, cv::Scalar(0));
-  // Texels behind the camera map through the homography with w < 0: never valid.
-  for (int y = 0; y < warpH; ++y) {
-    uint8_t* row = inside.ptr<uint8_t>(y);
-    for (int x = 0; x < warpW; ++x) {
-      const double w = pixelToPhoto(2, 0) * x + pixelToPhoto(2, 1) * y + pixelToPhoto(2, 2);
-      if (w <= 1e-6) row[x] = 0;
+  // Texels behind the camera map through the homography with w < 0: never valid. w is
+  // affine in (x, y), so it is positive everywhere when it is at the four corners.
+  const auto w = [&](double x, double y) { return pixelToPhoto(2, 0) * x + pixelToPhoto(2, 1) * y + pixelToPhoto(2, 2); };
+  if (std::min({w(0, 0), w(texW - 1, 0), w(0, texH - 1), w(texW - 1, texH - 1)}) <= 1e-6) {
+    for (int y = 0; y < texH; ++y) {
+      uint8_t* row = inside.ptr<uint8_t>(y);
+      for (int x = 0; x < texW; ++x) {
+        if (w(x, y) <= 1e-6) row[x] = 0;
+      }
     }
-  }
-  if (supersample > 1) {
-    cv::resize(warped, warped, {texW, texH}, 0, 0, cv::INTER_AREA);
-    cv::resize(inside, inside, {texW, texH}, 0, 0, cv::INTER_AREA);
-    cv::threshold(inside, inside, 127, 255, cv::THRESH_BINARY);
   }
   const int covered = cv::countNonZero(inside);
   out.coveredFraction = static_cast<double>(covered) / (texW * texH);
@@ -191,9 +205,10 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
     model.photoNearM = photoNearExtent(measurement, model.box, photo.cols, photo.rows);
     model.untexturedNearM = std::max(model.photoNearM, cameraZ + kBehindCameraM);
   }
+  const std::vector<cv::Mat> pyramid = photoPyramid(photo);
   for (int surface = 0; surface < kFaces; ++surface) {
     const Panel panel = surfacePanel(static_cast<Surface>(surface), model.box, model.photoNearM);
-    model.textures[surface] = cutTexture(photo, measurement, panel, options, model.meanColor[surface]);
+    model.textures[surface] = cutTexture(pyramid, measurement, panel, options, model.meanColor[surface]);
   }
   return model;
 }

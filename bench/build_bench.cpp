@@ -1,0 +1,78 @@
+// `photowalk build` benchmark (not a test), medians over runs, on a 12-megapixel photo
+// (the sample corridor upscaled to 4619 x 2598, corners and focal length scaled):
+//   measure + cut the five textures + assemble the scene (the work build does in
+//   memory), against reading the photo alone (the least any build must do);
+//   and writing the model (VRML97 + PNG textures) as a separate figure.
+// Target (issue 5): build under 1 s on 2 cores.
+// Usage: build_bench [RUNS]   (default 5)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "editor/pipeline.h"
+#include "editor/shot_file.h"
+#include "engine/vrml/vrml_writer.h"
+
+namespace {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+  const fs::path dir = fs::temp_directory_path() / "pw_build_bench";
+  fs::create_directories(dir);
+
+  // The 12 MP shot.
+  auto shot = pw::editor::readShotFile(fs::path(PW_SOURCE_DIR) / "assets/corridor.json");
+  if (!shot) return std::fprintf(stderr, "%s\n", shot.message().c_str()), 1;
+  const cv::Mat small = cv::imread(shot->imagePath);
+  const double scale = 4619.0 / small.cols;
+  cv::Mat big;
+  cv::resize(small, big, {4619, 2598}, 0, 0, cv::INTER_CUBIC);
+  cv::imwrite((dir / "big.png").string(), big);
+  pw::metrology::Shot bigShot = *shot;
+  bigShot.imagePath = (dir / "big.png").string();
+  bigShot.focalPx *= scale;
+  if (bigShot.principalPointPx) bigShot.principalPointPx = (*bigShot.principalPointPx + 0.5) * scale - 0.5;
+  for (auto& c : bigShot.cornersPx) c = (c + 0.5) * scale - 0.5;
+  if (auto w = pw::editor::writeShotFile(dir / "big.json", bigShot); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
+  std::printf("photo: %dx%d (%.1f MP)\n", big.cols, big.rows, big.total() / 1e6);
+
+  std::vector<double> readMs, buildMs, writeMs;
+  for (int i = 0; i < runs; ++i) {
+    auto t = Clock::now();
+    cv::Mat photo = cv::imread((dir / "big.png").string());
+    readMs.push_back(msSince(t));
+
+    t = Clock::now();
+    auto model = pw::editor::buildModel(pw::modeling::chainLayout({dir / "big.json"}), {});
+    buildMs.push_back(msSince(t));
+    if (!model) return std::fprintf(stderr, "%s\n", model.message().c_str()), 1;
+
+    t = Clock::now();
+    if (auto w = pw::engine::writeVrml(model->scene, dir / "big.wrl"); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
+    writeMs.push_back(msSince(t));
+  }
+  const double read = median(readMs), build = median(buildMs), write = median(writeMs);
+  std::printf("read the photo (baseline)          median %8.1f ms\n", read);
+  std::printf("build in memory (read+measure+cut) median %8.1f ms   (%.2fx the read; target < 1000 ms)\n", build,
+              build / read);
+  std::printf("write VRML + PNG textures          median %8.1f ms\n", write);
+  std::printf("build + write                      median %8.1f ms\n", build + write);
+  return 0;
+}
