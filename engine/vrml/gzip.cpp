@@ -60,7 +60,7 @@ Result<std::string> gunzip(std::string_view bytes, const std::string& name, size
 
 Result<std::string> gzipCompress(std::string_view text) {
   z_stream z{};
-  if (deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 9, Z_DEFAULT_STRATEGY) != Z_OK) {
+  if (deflateInit2(&z, 4, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
     return makeError("zlib initialisation failed");
   }
   std::string out;

@@ -60,9 +60,8 @@ Status ValueReader::integer(int32_t& value) {
   const Token& t = tokens_.peek();
   if (t.kind != TokenKind::kInteger) return expected("an integer", t);
   // Hexadecimal values up to 0xFFFFFFFF (SFImage pixels) wrap to the int32 they spell.
-  const bool hex = t.text.find_first_of("xX") != std::string_view::npos;
   const int64_t lo = std::numeric_limits<int32_t>::min();
-  const int64_t hi = hex ? int64_t{0xFFFFFFFF} : std::numeric_limits<int32_t>::max();
+  const int64_t hi = t.hexadecimal ? int64_t{0xFFFFFFFF} : std::numeric_limits<int32_t>::max();
   if (t.integer < lo || t.integer > hi) {
     return errorAt(fileName_, t.pos, "the integer " + std::string(t.text) + " in field '" + std::string(fieldName_) +
                                          "' does not fit in 32 bits");
@@ -168,6 +167,35 @@ Status ValueReader::readOne(FieldValue& out) {
 Status ValueReader::read(FieldValue& out) {
   if (!isMultiple(type_) || tokens_.peek().kind != TokenKind::kOpenBracket) return readOne(out);
   const Token open = tokens_.next();
+  // Big arrays are MFVec3f / MFVec2f / MFInt32 in brackets: a tight loop for them,
+  // falling back to the general path for anything unusual (and for its errors).
+  const bool floats = type_ == FieldType::kMFVec3f || type_ == FieldType::kMFVec2f || type_ == FieldType::kMFFloat ||
+                      type_ == FieldType::kMFColor || type_ == FieldType::kMFRotation;
+  const size_t group = static_cast<size_t>(componentCount(type_));
+  if (floats || type_ == FieldType::kMFInt32) {
+    while (true) {
+      const Token& t = tokens_.peek();
+      if (t.kind == TokenKind::kFloat && floats && std::fabs(t.number) <= static_cast<double>(FLT_MAX)) {
+        out.floats.push_back(static_cast<float>(t.number));
+      } else if (t.kind == TokenKind::kInteger && floats) {
+        out.floats.push_back(static_cast<float>(t.number));
+      } else if (t.kind == TokenKind::kInteger && !floats && !t.hexadecimal &&
+                 t.integer >= std::numeric_limits<int32_t>::min() && t.integer <= std::numeric_limits<int32_t>::max()) {
+        out.ints.push_back(static_cast<int32_t>(t.integer));
+      } else {
+        break;
+      }
+      tokens_.next();
+    }
+    // Leave the general loop below a list ending on a whole value.
+    const size_t count = floats ? out.floats.size() : out.ints.size();
+    if (floats && count % group != 0) {
+      const size_t partial = count % group;
+      for (size_t i = 0; i < partial; ++i) out.floats.pop_back();
+      return expected((std::to_string(group) + " numbers per value (got " + std::to_string(partial) + ")").c_str(),
+                      tokens_.peek());
+    }
+  }
   while (true) {
     const Token& t = tokens_.peek();
     if (t.kind == TokenKind::kCloseBracket) {

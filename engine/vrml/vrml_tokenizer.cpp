@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 namespace pw::engine::vrml {
 
@@ -174,16 +175,25 @@ Token Tokenizer::scanNumber(SourcePos pos, size_t begin) {
   Token t;
   t.pos = pos;
   size_t i = begin;
+  const bool negative = text_[i] == '-';
   if (text_[i] == '+' || text_[i] == '-') ++i;
   bool isFloat = false;
   bool hex = false;
+  // Decimal digits are accumulated while scanning, so that integers (most of a big
+  // file: coordIndex) need no second pass.
+  uint64_t digits = 0;
+  bool digitsOverflow = false;
   if (text_[i] == '0' && i + 1 < text_.size() && (text_[i + 1] == 'x' || text_[i + 1] == 'X') &&
       i + 2 < text_.size() && isHexDigit(text_[i + 2])) {
     hex = true;
     i += 2;
     while (i < text_.size() && isHexDigit(text_[i])) ++i;
   } else {
-    while (i < text_.size() && isDigit(text_[i])) ++i;
+    while (i < text_.size() && isDigit(text_[i])) {
+      if (digits > (UINT64_MAX - 9) / 10) digitsOverflow = true;
+      digits = digits * 10 + static_cast<uint64_t>(text_[i] - '0');
+      ++i;
+    }
     if (i < text_.size() && text_[i] == '.') {
       isFloat = true;
       ++i;
@@ -207,10 +217,8 @@ Token Tokenizer::scanNumber(SourcePos pos, size_t begin) {
   offset_ = end;
   if (end != i) return invalid(pos, "a malformed number '" + clip(all) + "'");
   t.text = all;
-  const char* first = all.data();
+  const char* first = all.data() + ((all[0] == '+' || all[0] == '-') ? 1 : 0);
   const char* last = all.data() + all.size();
-  const bool negative = *first == '-';
-  if (*first == '+' || *first == '-') ++first;
   if (hex) {
     uint64_t value = 0;
     auto r = std::from_chars(first + 2, last, value, 16);
@@ -218,8 +226,15 @@ Token Tokenizer::scanNumber(SourcePos pos, size_t begin) {
       return invalid(pos, "the hexadecimal number " + clip(all) + " does not fit in 32 bits");
     }
     t.kind = TokenKind::kInteger;
+    t.hexadecimal = true;
     t.integer = negative ? -static_cast<int64_t>(value) : static_cast<int64_t>(value);
     t.number = static_cast<double>(t.integer);
+    return t;
+  }
+  if (!isFloat && !digitsOverflow && digits <= static_cast<uint64_t>(INT64_MAX)) {
+    t.kind = TokenKind::kInteger;
+    t.integer = negative ? -static_cast<int64_t>(digits) : static_cast<int64_t>(digits);
+    t.number = negative ? -static_cast<double>(digits) : static_cast<double>(digits);
     return t;
   }
   double value = 0;
@@ -227,15 +242,8 @@ Token Tokenizer::scanNumber(SourcePos pos, size_t begin) {
   if (r.ec != std::errc() || r.ptr != last || !std::isfinite(value)) {
     return invalid(pos, "the number " + clip(all) + " is out of range");
   }
+  t.kind = TokenKind::kFloat;
   t.number = negative ? -value : value;
-  if (!isFloat && value < 9.2e18) {
-    t.kind = TokenKind::kInteger;
-    int64_t integer = 0;
-    std::from_chars(first, last, integer);
-    t.integer = negative ? -integer : integer;
-  } else {
-    t.kind = TokenKind::kFloat;
-  }
   return t;
 }
 

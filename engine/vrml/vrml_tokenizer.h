@@ -39,6 +39,7 @@ struct Token {
   double number = 0;       // kInteger, kFloat
   int64_t integer = 0;     // kInteger (hexadecimal values up to 0xFFFFFFFF included)
   bool hasEscapes = false;  // kString: text contains backslashes to remove
+  bool hexadecimal = false;  // kInteger written as 0x...
 };
 
 // Describes a token for "expected X, found Y" messages: "'}'", "end of file",
