@@ -9,6 +9,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <ctime>
+
+#include <sys/resource.h>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,22 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// CPU time of the whole process (all of lavapipe's threads): on a shared machine the
+// wall clock also counts other people's work, this does not.
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
+
+// CPU time (user + system) of finished child processes so far.
+double childrenCpuMs() {
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  const auto ms = [](const timeval& t) { return double(t.tv_sec) * 1e3 + double(t.tv_usec) / 1e3; };
+  return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
 double median(std::vector<double> v) {
@@ -58,15 +77,18 @@ int main(int argc, char** argv) {
     if (auto f = r.renderToImage(camera, kWidth, kHeight); !f) return fail(f.message());
   }
   // Alternate the two so that load from other processes hits both alike.
-  std::vector<double> sampleMs, emptyMs;
+  std::vector<double> sampleMs, emptyMs, sampleCpuMs, emptyCpuMs;
   for (int i = 0; i < frames; ++i) {
     for (const Scene* scene : {&sample, &empty}) {
       if (auto s = r.setScene(*scene); !s) return fail(s.message());
+      const double cpuStart = processCpuMs();
       const auto start = Clock::now();
       auto frame = r.renderToImage(camera, kWidth, kHeight);
       const double ms = msSince(start);
+      const double cpuMs = processCpuMs() - cpuStart;
       if (!frame) return fail(frame.message());
       (scene == &sample ? sampleMs : emptyMs).push_back(ms);
+      (scene == &sample ? sampleCpuMs : emptyCpuMs).push_back(cpuMs);
     }
   }
   if (auto s = r.setScene(sample); !s) return fail(s.message());
@@ -79,12 +101,16 @@ int main(int argc, char** argv) {
               *std::min_element(emptyMs.begin(), emptyMs.end()), *std::max_element(emptyMs.begin(), emptyMs.end()));
   std::printf("ratio sample / empty: %.2f (the scene's own cost: %.2f ms)\n", sampleMedian / emptyMedian,
               sampleMedian - emptyMedian);
+  const double sampleCpu = median(sampleCpuMs), emptyCpu = median(emptyCpuMs);
+  std::printf("process CPU time per frame (all threads): sample %.2f ms, empty %.2f ms, ratio %.2f\n", sampleCpu,
+              emptyCpu, sampleCpu / emptyCpu);
   renderer.value().reset();
 
   // Startup to first PNG, in process.
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "pw_render_bench.png";
-  std::vector<double> inProcessMs;
+  std::vector<double> inProcessMs, inProcessCpuMs;
   for (int i = 0; i < startups; ++i) {
+    const double cpuStart = processCpuMs();
     const auto start = Clock::now();
     auto fresh = Renderer::create(options);
     if (!fresh) return fail(fresh.message());
@@ -93,20 +119,23 @@ int main(int argc, char** argv) {
     if (!frame) return fail(frame.message());
     if (auto saved = saveImage(out, *frame); !saved) return fail(saved.message());
     inProcessMs.push_back(msSince(start));
+    inProcessCpuMs.push_back(processCpuMs() - cpuStart);
   }
   // And end to end through the command line (process start, Vulkan loader, driver, PNG).
   const std::string command = std::string(PW_BINARY_DIR) + "/photowalk render sample -o " + out.string() + " > /dev/null";
-  std::vector<double> commandMs;
+  std::vector<double> commandMs, commandCpuMs;
   for (int i = 0; i < startups; ++i) {
+    const double cpuStart = childrenCpuMs();
     const auto start = Clock::now();
     if (std::system(command.c_str()) != 0) return fail("'" + command + "' failed");
     commandMs.push_back(msSince(start));
+    commandCpuMs.push_back(childrenCpuMs() - cpuStart);
   }
   std::filesystem::remove(out);
-  std::printf("startup to first PNG, in process (create + upload + frame + PNG): median %.1f ms over %d\n",
-              median(inProcessMs), startups);
-  std::printf("startup to first PNG, photowalk render sample (1280x720):        median %.1f ms over %d\n",
-              median(commandMs), startups);
+  std::printf("startup to first PNG, in process (create + upload + frame + PNG): median %.1f ms (CPU %.1f ms) over %d\n",
+              median(inProcessMs), median(inProcessCpuMs), startups);
+  std::printf("startup to first PNG, photowalk render sample (1280x720):        median %.1f ms (CPU %.1f ms) over %d\n",
+              median(commandMs), median(commandCpuMs), startups);
   std::printf("ratio startup (command) / one sample frame: %.1f\n", median(commandMs) / sampleMedian);
   return 0;
 }

@@ -105,10 +105,13 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   auto staging = createBuffer(context, layout.total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kUpload);
   if (!staging) return staging.error();
   auto* bytes = static_cast<uint8_t*>(staging->mapped);
-  std::memcpy(bytes + layout.vertices, packed.vertices.data(), vertexBytes);
-  std::memcpy(bytes + layout.indices, packed.indices.data(), indexBytes);
-  std::memcpy(bytes + layout.lights, packed.lights.data(), lightBytes);
-  std::memcpy(bytes + layout.shapes, packed.shapes.data(), shapeBytes);
+  const auto put = [&](VkDeviceSize at, const void* from, VkDeviceSize size) {
+    if (size > 0) std::memcpy(bytes + at, from, size);  // empty vectors may have null data()
+  };
+  put(layout.vertices, packed.vertices.data(), vertexBytes);
+  put(layout.indices, packed.indices.data(), indexBytes);
+  put(layout.lights, packed.lights.data(), lightBytes);
+  put(layout.shapes, packed.shapes.data(), shapeBytes);
   for (size_t i = 0; i < images.size(); ++i) {
     static const uint8_t kWhite[4] = {255, 255, 255, 255};
     std::memcpy(bytes + layout.textures[i], images[i] ? images[i]->rgba.data() : kWhite, images[i] ? images[i]->rgba.size() : 4);

@@ -239,6 +239,10 @@ Result<Image> Renderer::renderToImage(const Camera& camera, int width, int heigh
   return image;
 }
 
+Status Renderer::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  return impl_->context->submitAndWait(record);
+}
+
 size_t Renderer::validationMessageCount() const { return impl_->context->validationLog().count(); }
 std::vector<std::string> Renderer::validationMessages() const { return impl_->context->validationLog().messages(); }
 bool Renderer::validationEnabled() const { return impl_->context->validationEnabled(); }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,6 +79,10 @@ class Renderer {
   int msaaSamples() const;
   FrameStats lastFrameStats() const;
   std::vector<std::string> notes() const;  // non-fatal remarks, e.g. "validation layer not installed"
+
+  // Records commands with `record`, submits them on the renderer's queue and waits
+  // (one-off work such as ImGui_ImplVulkan_CreateFontsTexture).
+  Status submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
   // For window code (surface creation, ImGui's Vulkan backend); borrowed handles.
   VkInstance instance() const;

@@ -160,8 +160,11 @@ Status recordScenePass(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
       const glm::vec3 offset = d.worldBounds.center() - camera.position;
       scratch.transparent.emplace_back(glm::dot(offset, offset), &d);
     }
-    std::stable_sort(scratch.transparent.begin(), scratch.transparent.end(),
-                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    // std::sort, not stable_sort, which would allocate a buffer every frame; ties go
+    // by shape index so the order is the same on every run.
+    std::sort(scratch.transparent.begin(), scratch.transparent.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second->shapeIndex < b.second->shapeIndex;
+    });
     for (const auto& [distance, d] : scratch.transparent) {
       if (!status) break;
       status = state.draw(*d);

@@ -66,6 +66,9 @@ TEST_F(PresenterTest, DrawsFramesWithTheOverlayAndSurvivesResizeAndSceneChange) 
   ASSERT_TRUE(presenter.ok()) << presenter.message();
   presenter_ = std::move(*presenter);
   EXPECT_NE(presenter_->overlayRenderPass(), VK_NULL_HANDLE);
+  int oneOffCalls = 0;  // as ImGui's font upload would use it
+  ASSERT_TRUE(renderer_->submitAndWait([&](VkCommandBuffer cmd) { oneOffCalls += cmd != VK_NULL_HANDLE; }).ok());
+  EXPECT_EQ(oneOffCalls, 1);
   EXPECT_GE(presenter_->imageCount(), presenter_->minImageCount());
   EXPECT_EQ(presenter_->extent().width, uint32_t(w));
 
