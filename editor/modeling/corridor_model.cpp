@@ -131,8 +131,17 @@ SurfaceTexture cutTexture(const std::vector<cv::Mat>& pyramid, const Measurement
   const int texW = std::max(2, static_cast<int>(std::lround(widthM * pxPerM)));
   const int texH = std::max(2, static_cast<int>(std::lround(heightM * pxPerM)));
 
-  // Pyramid level L holds pixel centres at (u + 0.5) / 2^L - 0.5.
-  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0, photoScale / pxPerM)))), 0,
+  // Pyramid level L holds pixel centres at (u + 0.5) / 2^L - 0.5. The photo's scale
+  // varies over the plane; a level coarser than the texture where the photo is at
+  // its coarsest would lose detail there, so the level follows the least scale seen.
+  double leastScale = photoScale;
+  for (int j = 0; j <= 24; ++j) {
+    for (int i = 0; i <= 24; ++i) {
+      const double s = r.s0 + widthM * i / 24.0, t = r.t0 + heightM * j / 24.0;
+      if (visibleInPhoto(h, s, t, photo.cols, photo.rows)) leastScale = std::min(leastScale, localScale(h, s, t));
+    }
+  }
+  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0, leastScale / pxPerM)))), 0,
                                static_cast<int>(pyramid.size()) - 1);
   const double k = 1.0 / (1 << level);
   const cv::Matx33d toLevel(k, 0, 0.5 * k - 0.5, 0, k, 0.5 * k - 0.5, 0, 0, 1);
