@@ -1,19 +1,15 @@
-// The reader's scene layer: nodes, meshes, materials, textures, cameras and lights
-// of a loaded glTF document become the scene model (mappings: gltf_mapping.h).
+// The reader's scene layer: the node tree, meshes, cameras and lights of a loaded
+// glTF document become the scene model (mappings: gltf_mapping.h).
+#include "engine/gltf/gltf_read_scene.h"
+
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <map>
 #include <numeric>
-#include <set>
-#include <system_error>
-#include <thread>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "engine/gltf/gltf_mapping.h"
-#include "engine/gltf/gltf_read_source.h"
 #include "engine/scene/camera.h"
 
 namespace pw::engine::gltf {
@@ -22,10 +18,6 @@ namespace {
 
 // A light without a range reaches everywhere; VRML needs a radius.
 constexpr float kUnboundedRadiusM = 1.0e6f;
-
-std::string indexed(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
-
-glm::vec3 vec3Of(const std::vector<double>& v) { return glm::vec3(float(v[0]), float(v[1]), float(v[2])); }
 
 // Primitive modes (glTF 2.0, 5.24.4) to the scene model's lists.
 Result<std::vector<uint32_t>> listIndices(const Source& source, int mode, std::vector<uint32_t> in, Topology* topology,
@@ -64,129 +56,7 @@ Result<std::vector<uint32_t>> listIndices(const Source& source, int mode, std::v
   }
 }
 
-struct DecodedImage {
-  std::shared_ptr<const Image> image;  // null when it could not be read (warned)
-  std::string url;                     // the file it came from, or its name
-};
-
-// Decodes every image that a material's baseColorTexture uses, on all cores: PNG and
-// JPEG decoding is most of the reader's time on a textured model (bench/gltf_bench.cpp).
-std::map<size_t, DecodedImage> decodeUsedImages(const Source& source) {
-  std::set<size_t> used;
-  const Json* materials = member(source.doc, "materials");
-  const Json* textures = member(source.doc, "textures");
-  if (materials && materials->is_array() && textures && textures->is_array()) {
-    for (const Json& material : *materials) {
-      const Json* pbr = member(material, "pbrMetallicRoughness");
-      const Json* info = pbr ? member(*pbr, "baseColorTexture") : nullptr;
-      const Json* index = info ? member(*info, "index") : nullptr;
-      if (!index || !index->is_number_unsigned() || index->get<size_t>() >= textures->size()) continue;
-      const Json* image = member((*textures)[index->get<size_t>()], "source");
-      if (image && image->is_number_unsigned()) used.insert(image->get<size_t>());
-    }
-  }
-  struct Job {
-    size_t index;
-    std::string where;
-    std::vector<uint8_t> owned;
-    std::span<const uint8_t> bytes;
-    Result<Image> result = makeError("not decoded");
-  };
-  std::vector<Job> jobs;
-  std::map<size_t, DecodedImage> out;
-  for (size_t index : used) {
-    Job job{index, indexed("images", index), {}, {}};
-    DecodedImage& entry = out[index];
-    auto imageJson = element(source, "images", Json(index), "a texture");
-    if (!imageJson) {
-      source.warn(imageJson.message() + "; drawn without it");
-      continue;
-    }
-    if (const Json* uri = member(**imageJson, "uri"); uri && uri->is_string()) {
-      auto bytes = resolveUri(source, uri->get<std::string>(), job.where);
-      if (!bytes) {
-        source.warn(bytes.message() + "; drawn without the texture");
-        continue;
-      }
-      job.owned = std::move(*bytes);
-      job.bytes = job.owned;
-      if (uri->get<std::string>().rfind("data:", 0) != 0) entry.url = uri->get<std::string>();
-    } else if (const Json* view = member(**imageJson, "bufferView")) {
-      auto bytes = bufferViewBytes(source, *view, job.where);
-      if (!bytes) {
-        source.warn(bytes.message() + "; drawn without the texture");
-        continue;
-      }
-      job.bytes = *bytes;
-    } else {
-      source.warn(job.where + ": has neither uri nor bufferView; drawn without it");
-      continue;
-    }
-    if (const Json* n = member(**imageJson, "name"); entry.url.empty() && n && n->is_string()) entry.url = n->get<std::string>();
-    jobs.push_back(std::move(job));
-  }
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t i = next++; i < jobs.size(); i = next++) {
-      jobs[i].result = decodeImage(jobs[i].bytes.data(), jobs[i].bytes.size(), source.name + ": " + jobs[i].where);
-    }
-  };
-  std::vector<std::thread> helpers;
-  const size_t threads = std::min<size_t>(jobs.size(), std::max(1u, std::thread::hardware_concurrency()));
-  for (size_t t = 1; t < threads; ++t) {
-    try {
-      helpers.emplace_back(work);
-    } catch (const std::system_error&) {
-      break;  // the calling thread does the rest
-    }
-  }
-  work();
-  for (std::thread& helper : helpers) helper.join();
-  for (Job& job : jobs) {
-    if (job.result) {
-      out[job.index].image = std::make_shared<const Image>(std::move(*job.result));
-    } else {
-      source.warn(job.result.message() + "; drawn without it");
-    }
-  }
-  return out;
-}
-
-class SceneBuilder {
- public:
-  explicit SceneBuilder(const Source& source) : source_(source) {}
-  Result<Scene> build();
-
- private:
-  struct Look {
-    std::shared_ptr<const Appearance> appearance;
-    int texCoordSet = 0;
-    bool unlit = false;
-    bool doubleSided = false;
-    glm::vec4 colorFactor{1.0f};  // folded into vertex colours for unlit, untextured shapes
-  };
-
-  Status addNode(size_t index, const glm::mat4& parent, size_t depth);
-  Result<glm::mat4> localMatrix(const Json& node, const std::string& where);
-  Status addMeshShapes(const Json& meshIndex, const glm::mat4& world, const std::string& nodeName,
-                       const std::string& where);
-  Result<std::shared_ptr<const Mesh>> primitiveMesh(size_t mesh, size_t primitive, const Json& json, const Look& look,
-                                                    const std::string& where);
-  Result<Look> lookFor(const Json* materialIndex, const std::string& where);
-  std::shared_ptr<const Texture> textureFor(const Json& textureInfo, bool opaque, const std::string& where);
-  Status addCamera(const Json& cameraIndex, const glm::mat4& world, const std::string& nodeName,
-                   const std::string& where);
-  Status addLight(const Json& lightIndex, const glm::mat4& world, const std::string& where);
-
-  const Source& source_;
-  Scene scene_;
-  std::set<size_t> visited_;
-  std::map<std::pair<size_t, size_t>, std::shared_ptr<const Mesh>> meshes_;
-  std::map<int, Look> looks_;  // -1: the default material
-  std::map<std::pair<size_t, bool>, std::shared_ptr<const Texture>> textures_;
-  std::map<std::pair<size_t, bool>, std::shared_ptr<const Image>> images_;
-  std::map<size_t, DecodedImage> decoded_;  // every image a material uses, decoded up front
-};
+}  // namespace
 
 Result<glm::mat4> SceneBuilder::localMatrix(const Json& node, const std::string& where) {
   if (member(node, "matrix")) {
@@ -366,134 +236,6 @@ Result<std::shared_ptr<const Mesh>> SceneBuilder::primitiveMesh(size_t meshIndex
   return shared;
 }
 
-Result<SceneBuilder::Look> SceneBuilder::lookFor(const Json* materialIndex, const std::string& where) {
-  if (materialIndex && !materialIndex->is_number_unsigned()) {
-    return source_.error(where + ": material " + materialIndex->dump() + " is not an index");
-  }
-  const int key = materialIndex ? static_cast<int>(std::min<size_t>(materialIndex->get<size_t>(), INT32_MAX)) : -1;
-  if (auto found = looks_.find(key); found != looks_.end()) return found->second;
-  Look look;
-  auto appearance = std::make_shared<Appearance>();
-  if (!materialIndex) {
-    // The default material (glTF 2.0, 3.9.6) is lit, white.
-    appearance->material = Material{};
-    appearance->material->diffuseColor = glm::vec3(1.0f);
-    look.appearance = appearance;
-    looks_[key] = look;
-    return look;
-  }
-  auto materialJson = element(source_, "materials", *materialIndex, where);
-  if (!materialJson) return materialJson.error();
-  const Json& material = **materialJson;
-  const std::string at = indexed("materials", static_cast<size_t>(key));
-  const Json* pbr = member(material, "pbrMetallicRoughness");
-  static const Json kEmpty = Json::object();
-  if (!pbr) pbr = &kEmpty;
-  auto base = numbersOr(source_, *pbr, "baseColorFactor", 4, {1, 1, 1, 1}, at);
-  auto metallic = numberOr(source_, *pbr, "metallicFactor", 1, at);
-  auto roughness = numberOr(source_, *pbr, "roughnessFactor", 1, at);
-  auto emissive = numbersOr(source_, material, "emissiveFactor", 3, {0, 0, 0}, at);
-  if (!base) return base.error();
-  if (!metallic) return metallic.error();
-  if (!roughness) return roughness.error();
-  if (!emissive) return emissive.error();
-  std::string alphaMode = "OPAQUE";
-  if (const Json* mode = member(material, "alphaMode"); mode && mode->is_string()) alphaMode = mode->get<std::string>();
-  if (const Json* ds = member(material, "doubleSided"); ds && ds->is_boolean()) look.doubleSided = ds->get<bool>();
-  const Json* ext = member(material, "extensions");
-  look.unlit = ext && member(*ext, "KHR_materials_unlit");
-  const glm::vec4 factor{static_cast<float>((*base)[0]), static_cast<float>((*base)[1]), static_cast<float>((*base)[2]),
-                       static_cast<float>((*base)[3])};
-  const float opacity = alphaMode == "OPAQUE" ? 1.0f : std::clamp(factor.w, 0.0f, 1.0f);
-  if (const Json* textureInfo = member(*pbr, "baseColorTexture")) {
-    appearance->texture = textureFor(*textureInfo, alphaMode == "OPAQUE", at);
-    if (const Json* set = member(*textureInfo, "texCoord"); set && set->is_number_unsigned()) {
-      look.texCoordSet = static_cast<int>(std::min<size_t>(set->get<size_t>(), 8));
-    }
-  }
-  if (look.unlit) {
-    look.colorFactor = glm::vec4(glm::vec3(factor), opacity);
-  } else {
-    // Metals have no diffuse term and a specular highlight in their own colour
-    // (glTF 2.0, Appendix B.3.5); VRML's Material is the dielectric case.
-    const float m = std::clamp(float(*metallic), 0.0f, 1.0f);
-    const glm::vec3 baseDisplay = srgbFromLinear(glm::vec3(factor));
-    Material vrml;
-    vrml.diffuseColor = baseDisplay * (1.0f - m);
-    vrml.specularColor = glm::mix(glm::vec3(srgbFromLinear(0.04f)), baseDisplay, m);
-    vrml.shininess = shininessFromRoughness(float(*roughness));
-    vrml.emissiveColor = srgbFromLinear(vec3Of(*emissive));
-    vrml.transparency = 1.0f - opacity;
-    vrml.ambientIntensity = 0.0f;  // glTF has no ambient term
-    if (appearance->texture) vrml.diffuseColor = glm::vec3(1.0f);  // VRML: the texture replaces it
-    appearance->material = vrml;
-  }
-  if (ext && member(*ext, "KHR_texture_transform")) source_.warn(at + ": ignores KHR_texture_transform");
-  look.appearance = appearance;
-  looks_[key] = look;
-  return look;
-}
-
-std::shared_ptr<const Texture> SceneBuilder::textureFor(const Json& textureInfo, bool opaque, const std::string& where) {
-  const Json* index = member(textureInfo, "index");
-  if (!index || !index->is_number_unsigned()) {
-    source_.warn(where + ": baseColorTexture has no index; drawn without it");
-    return nullptr;
-  }
-  const auto key = std::make_pair(index->get<size_t>(), opaque);
-  if (auto found = textures_.find(key); found != textures_.end()) return found->second;
-  std::shared_ptr<Texture> texture;
-  auto textureJson = element(source_, "textures", *index, where);
-  if (!textureJson) {
-    source_.warn(textureJson.message() + "; drawn without it");
-    textures_[key] = nullptr;
-    return nullptr;
-  }
-  const Json* imageIndex = member(**textureJson, "source");
-  if (!imageIndex || !imageIndex->is_number_unsigned()) {
-    source_.warn(where + ": its texture has no image (or only an extension's); drawn without it");
-    textures_[key] = nullptr;
-    return nullptr;
-  }
-  const auto imageKey = std::make_pair(imageIndex->get<size_t>(), opaque);
-  std::string url;
-  if (auto found = decoded_.find(imageIndex->get<size_t>()); found != decoded_.end()) url = found->second.url;
-  if (!images_.count(imageKey)) {
-    std::shared_ptr<const Image> decoded;
-    if (auto found = decoded_.find(imageIndex->get<size_t>()); found != decoded_.end()) decoded = found->second.image;
-    // OPAQUE ignores the alpha channel (glTF 2.0, 3.9.4); VRML would blend with it.
-    if (decoded && opaque) {
-      bool translucent = false;
-      for (size_t i = 3; i < decoded->rgba.size() && !translucent; i += 4) translucent = decoded->rgba[i] != 255;
-      if (translucent) {
-        Image copy = *decoded;
-        for (size_t i = 3; i < copy.rgba.size(); i += 4) copy.rgba[i] = 255;
-        decoded = std::make_shared<const Image>(std::move(copy));
-      }
-    }
-    images_[imageKey] = decoded;
-  }
-  const std::shared_ptr<const Image> image = images_[imageKey];
-  if (image) {
-    texture = std::make_shared<Texture>();
-    texture->image = image;
-    texture->url = url;
-    if (const Json* samplerIndex = member(**textureJson, "sampler")) {
-      if (auto sampler = element(source_, "samplers", *samplerIndex, where)) {
-        // Mirrored repeat has no VRML form; plain repeat is nearest.
-        if (const Json* s = member(**sampler, "wrapS"); s && s->is_number_unsigned() && s->get<size_t>() == kWrapClampToEdge) {
-          texture->wrapS = TextureWrap::kClamp;
-        }
-        if (const Json* t = member(**sampler, "wrapT"); t && t->is_number_unsigned() && t->get<size_t>() == kWrapClampToEdge) {
-          texture->wrapT = TextureWrap::kClamp;
-        }
-      }
-    }
-  }
-  textures_[key] = texture;
-  return texture;
-}
-
 Status SceneBuilder::addCamera(const Json& cameraIndex, const glm::mat4& world, const std::string& nodeName,
                                const std::string& where) {
   auto cameraJson = element(source_, "cameras", cameraIndex, where);
@@ -615,8 +357,6 @@ Result<Scene> SceneBuilder::build() {
   }
   return std::move(scene_);
 }
-
-}  // namespace
 
 Result<Scene> buildScene(const Source& source) { return SceneBuilder(source).build(); }
 
