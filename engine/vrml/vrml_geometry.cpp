@@ -149,8 +149,9 @@ Result<std::optional<Mesh>> buildGeometry(const Node& node, const NodeResolver& 
   if (type == "IndexedLineSet") return buildLineSet(node, resolve, diagnostics);
   if (type == "PointSet") return buildPointSet(node, resolve, diagnostics);
   if (type == "ElevationGrid") return buildElevationGrid(node, resolve, options, diagnostics);
+  if (type == "Extrusion") return buildExtrusion(node, options, diagnostics);
   if (diagnostics) {
-    if (type == "Text" || type == "Extrusion") {
+    if (type == "Text") {
       diagnostics->warn(node.where() + ": " + type + " geometry is not supported yet; the shape is skipped");
     } else {
       diagnostics->warn(node.where() + ": a " + type + " is not a geometry node; the shape is skipped");

@@ -1,5 +1,5 @@
 // VRML97 geometry nodes to scene meshes (ISO/IEC 14772-1, 6.4 Box, 6.10 Cone, 6.12
-// Cylinder, 6.17 ElevationGrid, 6.23 IndexedFaceSet, 6.24 IndexedLineSet, 6.36
+// Cylinder, 6.17 ElevationGrid, 6.18 Extrusion, 6.23 IndexedFaceSet, 6.24 IndexedLineSet, 6.36
 // PointSet, 6.44 Sphere), in the node's local space, with the standard's texture
 // coordinate layouts.
 #pragma once
@@ -37,5 +37,7 @@ Result<std::optional<Mesh>> buildIndexedFaceSet(const Node& node, const NodeReso
                                                 const GeometryOptions& options, Diagnostics* diagnostics);
 Result<std::optional<Mesh>> buildElevationGrid(const Node& node, const NodeResolver& resolve,
                                                const GeometryOptions& options, Diagnostics* diagnostics);
+// Extrusion (vrml_extrusion.cpp).
+Result<std::optional<Mesh>> buildExtrusion(const Node& node, const GeometryOptions& options, Diagnostics* diagnostics);
 
 }  // namespace pw::engine::vrml

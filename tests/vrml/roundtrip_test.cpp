@@ -44,6 +44,15 @@ TEST(VrmlRoundTrip, EverySampleReadsBackExactly) {
   }
 }
 
+TEST(VrmlRoundTrip, FixturesReadBackExactly) {
+  for (const char* name : {"geometry_mix.wrl", "nonconvex.wrl", "externproto.wrl", "textured.wrl"}) {
+    SCOPED_TRACE(name);
+    auto scene = readVrml(fs::path(PW_TEST_DATA_DIR) / "vrml" / name, nullptr);
+    ASSERT_TRUE(scene.ok()) << scene.message();
+    expectRoundTrip(*scene, fs::path(name).stem().string());
+  }
+}
+
 TEST(VrmlRoundTrip, AwkwardTransformsLightsAndFloats) {
   Scene s;
   auto mesh = std::make_shared<Mesh>(vrml::makeSphere(0.1f, false, 8, 4));
