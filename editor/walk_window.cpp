@@ -21,8 +21,6 @@
 #include "editor/walk/avatar.h"
 #include "engine/gpu/presenter.h"
 #include "engine/gpu/renderer.h"
-#include "engine/gpu/renderer_impl.h"
-#include "engine/gpu/context.h"
 #include "engine/gpu/vk_owner.h"
 #include "engine/scene/collision.h"
 
@@ -248,7 +246,7 @@ Status WalkApp::open() {
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   imgui_->vulkan = ImGui_ImplVulkan_Init(&info, presenter_->overlayRenderPass());
   if (!imgui_->glfw || !imgui_->vulkan) return makeError("cannot start the ImGui overlay");
-  PW_TRY(renderer_->impl().context->submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); }));
+  PW_TRY(renderer_->submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); }));
   ImGui_ImplVulkan_DestroyFontUploadObjects();
   return {};
 }
