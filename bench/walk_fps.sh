@@ -15,18 +15,21 @@ trap 'rm -rf "$out"' EXIT
 
 python3 - "$shared" "$out/building.json" <<'PY'
 import json, sys
-shots = ["corridor_a", "corridor_b", "corridor_c", "corridor_d", "corridor_e"]
-corridors = [{"name": "c0", "shot": f"{sys.argv[1]}/corridor_b.json"}]
-# A spine of far-attached corridors with wings off both sides.
-spine = 0
-for i in range(1, 20):
-    shot = f"{sys.argv[1]}/{shots[i % 5]}.json"
-    if i % 3 == 0:
-        corridors.append({"name": f"c{i}", "shot": shot, "attach": {"to": f"c{spine}", "side": "far", "offset_m": 0}})
-        spine = i
-    else:
-        side = "left" if i % 3 == 1 else "right"
-        corridors.append({"name": f"c{i}", "shot": shot, "attach": {"to": f"c{spine}", "side": side, "offset_m": 3.0 if side == "left" else 6.5}})
+# A spine of long corridors (b, d, e: 14.5 to 26 m) joined end to end, each with a
+# narrow wing (a, c: 2.4 and 1.8 m wide) off its left and right walls: 20 corridors.
+spine_shots, wing_shots = ["corridor_b", "corridor_d", "corridor_e"], ["corridor_a", "corridor_c"]
+corridors, spine, n = [], None, 0
+while n < 20:
+    name = f"c{n}"
+    entry = {"name": name, "shot": f"{sys.argv[1]}/{spine_shots[n % 3]}.json"}
+    if spine is not None:
+        entry["attach"] = {"to": spine, "side": "far", "offset_m": 0}
+    corridors.append(entry); spine = name; n += 1
+    for side, offset in (("left", 3.0), ("right", 8.0)):
+        if n < 20:
+            corridors.append({"name": f"c{n}", "shot": f"{sys.argv[1]}/{wing_shots[n % 2]}.json",
+                              "attach": {"to": spine, "side": side, "offset_m": offset}})
+            n += 1
 json.dump({"corridors": corridors}, open(sys.argv[2], "w"), indent=1)
 PY
 

@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "engine/scene/sample_scene.h"
+#include "engine/gltf/gltf_reader.h"
 #include "engine/vrml/vrml_reader.h"
 
 namespace pw::editor {
@@ -27,8 +28,9 @@ Result<engine::Scene> loadModel(const std::filesystem::path& path, std::vector<s
     }
     return scene;
   }
+  if (name.ends_with(".glb") || name.ends_with(".gltf")) return engine::readGltf(path, warnings);
   return makeError(path.string() + ": cannot read " + (ext.empty() ? "files without an extension" : ext + " files") +
-                   " yet; the only scene available is the built-in '" + kSampleSceneName + "'");
+                   ": photowalk reads VRML97 (.wrl, .wrl.gz) and glTF 2.0 (.glb, .gltf)");
 }
 
 }  // namespace pw::editor

@@ -37,7 +37,7 @@ done
 "$pw" render "$out/corridor.wrl" --camera-from assets/corridor.json -o "$out/views/photo_camera.png"
 
 echo "== Rendering a tour"
-"$pw" tour "$out/corridor.wrl" -o "$out/tour" --frames 240 --size 960x540 --video "$out/tour.mp4"
+"$pw" tour "$out/corridor.wrl" -o "$out/tour" --frames 150 --size 960x540 --video "$out/tour.mp4"
 
 cat <<EOF2
 
