@@ -367,8 +367,7 @@ Status checkHeader(std::string_view text, const std::string& name) {
   constexpr std::string_view kHeader = "#VRML V2.0 utf8";
   if (first.substr(0, kHeader.size()) == kHeader) return {};
   if (first.substr(0, 10) == "#VRML V1.0") {
-    return makeError(name + ": VRML 1.0 is not supported; convert the file to VRML97 (#VRML V2.0 utf8) first, "
-                            "e.g. with view3dscene --write");
+    return makeError(name + ": VRML 1.0 is not supported; photowalk reads VRML97 files (#VRML V2.0 utf8)");
   }
   if (first.substr(0, 4) == "#X3D" || first.substr(0, 5) == "<?xml") {
     return makeError(name + ": X3D files are not supported; photowalk reads VRML97 (#VRML V2.0 utf8)");
