@@ -215,7 +215,11 @@ void Builder::addLight(const Node& node, const glm::dmat4& m) {
   light.ambientIntensity = static_cast<float>(glm::clamp(getDouble(node, "ambientIntensity"), 0.0, 1.0));
   const bool identity = isIdentity(m);
   if (light.type != LightType::kPoint) {
-    const glm::dvec3 d = getVec3(node, "direction");
+    glm::dvec3 d = getVec3(node, "direction");
+    if (!(glm::length(d) > 0.0)) {
+      warn(node.where() + ": " + type + " direction 0 0 0 points nowhere; using 0 0 -1");
+      d = {0.0, 0.0, -1.0};
+    }
     light.direction = identity ? glm::vec3(d) : glm::vec3(glm::dmat3(m) * d);
   }
   if (light.type != LightType::kDirectional) {
@@ -242,7 +246,12 @@ void Builder::addViewpoint(const Node& node, const glm::dmat4& m) {
   Viewpoint v;
   v.description = getString(node, "description");
   const glm::dvec3 p = getVec3(node, "position");
-  const glm::dvec4 o = getVec4(node, "orientation");
+  glm::dvec4 o = getVec4(node, "orientation");
+  if (!(glm::length(glm::dvec3(o)) > 0.0)) {
+    // A zero axis has no rotation to give; viewers read it as none.
+    if (o.w != 0.0) warn(node.where() + ": Viewpoint orientation has a zero axis; treated as no rotation");
+    o = {0.0, 0.0, 1.0, 0.0};
+  }
   v.fieldOfViewRad = static_cast<float>(getDouble(node, "fieldOfView"));
   if (!(v.fieldOfViewRad > 0.0f && v.fieldOfViewRad < 3.14159f)) {
     warn(node.where() + ": Viewpoint fieldOfView " + std::to_string(v.fieldOfViewRad) +

@@ -139,6 +139,14 @@ TEST(VrmlReader, ViewpointsNavigationLightsBackgroundWorldInfo) {
   EXPECT_FLOAT_EQ(s.lights[2].intensity, 0.5f);
 }
 
+TEST(VrmlReader, DegenerateDirectionsAreReplacedWithAWarning) {
+  Diagnostics d;
+  const Scene s = read("Viewpoint { orientation 0 0 0 1 } DirectionalLight { direction 0 0 0 }", &d);
+  EXPECT_EQ(s.viewpoints.at(0).orientation, glm::vec4(0, 0, 1, 0));
+  EXPECT_EQ(s.lights.at(0).direction, glm::vec3(0, 0, -1));
+  EXPECT_EQ(d.warningCount(), 2);
+}
+
 TEST(VrmlReader, ProtoInstancesExpandWithIsMappings) {
   const Scene s = read(R"(
     PROTO Pillar [ field SFColor color 1 1 0  field SFFloat height 2  field MFNode extra [] ] {
