@@ -485,7 +485,11 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     if (!s.appearance || !s.appearance->texture || !s.appearance->texture->image) continue;
     const Texture& t = *s.appearance->texture;
     if (urls.count(t.image.get()) || t.image->empty()) continue;
-    const std::string base = outStem + "_" + textureStem(t.url);
+    // A texture this writer named for the same output stem keeps its name, so that
+    // rewriting a file does not stack prefixes (hall_hall_floor.png).
+    std::string stem = textureStem(t.url);
+    if (stem.rfind(outStem + "_", 0) == 0 && stem.size() > outStem.size() + 1) stem = stem.substr(outStem.size() + 1);
+    const std::string base = outStem + "_" + stem;
     std::string file = base + extension;
     for (int k = 2; taken.count(file); ++k) file = base + "_" + std::to_string(k) + extension;
     taken.insert(file);
