@@ -5,7 +5,9 @@
 // the same viewpoint and size. Side-by-side images go to test_output/vrml/render.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 
@@ -124,6 +126,29 @@ TEST(VrmlRender, RendersMatchViewerScreenshotSilhouettes) {
   EXPECT_EQ((*renderer)->validationMessageCount(), 0u);
   EXPECT_GE(compared, 1);
   if (samples == 0) std::printf("  (no shared samples in %s: only photowalk's fixtures compared)\n", PW_SHARED_DIR);
+}
+
+// The command a person runs, through editor/model_io: every sample renders, with the
+// reader's warnings on stderr and nothing else.
+TEST(VrmlRender, PhotowalkRenderDrawsEverySample) {
+  const auto samples = vrmlSamples();
+  if (samples.empty()) GTEST_SKIP() << "no samples in " << PW_SHARED_DIR "/vrml-samples";
+  const fs::path outDir = fs::path(PW_BINARY_DIR) / "test_output" / "vrml" / "render_command";
+  fs::create_directories(outDir);
+  for (const fs::path& sample : samples) {
+    SCOPED_TRACE(sample.string());
+    const fs::path out = outDir / (sample.filename().string() + ".png");
+    fs::remove(out);
+    const std::string command = std::string("'") + PW_PHOTOWALK + "' render '" + sample.string() + "' -o '" +
+                                out.string() + "' --size 320x180 --cpu > '" + out.string() + ".log' 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    auto image = loadImage(out);
+    ASSERT_TRUE(image.ok()) << image.message();
+    EXPECT_EQ(image->width, 320);
+    const auto mask = silhouette(*image, 8);
+    EXPECT_TRUE(std::count(mask.begin(), mask.end(), true) > 0 || sample.filename() == "pointset.wrl")
+        << "nothing drawn";
+  }
 }
 
 }  // namespace
