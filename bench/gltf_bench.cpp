@@ -1,7 +1,7 @@
 // glTF export speed: writeGltf on a corridor-sized scene (five photo textures, one
 // rectified-wall-like texture and a 262k-vertex mesh), against baselines measured in
 // the same run:
-//   stb PNGs    embedding through engine/scene's encodePng (stb_image_write) on one
+//   stb PNGs    embedding through stb_image_write's PNG encoder on one
 //               thread, plus an atomic write as large as the .glb;
 //   copy+write  for geometry only: copying the vertex arrays once and writing them;
 //   stb decode  for reading: decoding the embedded PNGs, which any reader must do.
@@ -19,11 +19,23 @@
 #include "base/atomic_file.h"
 #include "engine/gltf/gltf_reader.h"
 #include "engine/gltf/gltf_writer.h"
-#include "engine/gltf/png_encoder.h"
+#include <stb_image_write.h>
 #include "engine/scene/image.h"
 #include "engine/scene/scene.h"
 
 namespace {
+
+// The baseline: stb_image_write's PNG encoder (compiled into pw_scene), into memory.
+std::vector<uint8_t> stbPng(const pw::engine::Image& image) {
+  std::vector<uint8_t> out;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int size) {
+        auto* bytes = static_cast<std::vector<uint8_t>*>(context);
+        bytes->insert(bytes->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
+      },
+      &out, image.width, image.height, 4, image.rgba.data(), image.width * 4);
+  return out;
+}
 
 using namespace pw;
 using namespace pw::engine;
@@ -155,12 +167,12 @@ int main() {
   if (!glbBytes || !geometryBytes) return std::fprintf(stderr, "error: export failed\n"), 1;
   size_t stbBytes = 0, ourBytes = 0;
   for (const Image* image : images) {
-    stbBytes += encodePng(*image)->size();
-    ourBytes += gltf::encodeTexturePng(*image)->size();
+    stbBytes += stbPng(*image).size();
+    ourBytes += encodePng(*image)->size();
   }
   const std::string filler(glbBytes->size(), 'x');
   std::vector<std::vector<uint8_t>> pngs;
-  for (const Image* image : images) pngs.push_back(*gltf::encodeTexturePng(*image));
+  for (const Image* image : images) pngs.push_back(*encodePng(*image));
   const Mesh& big = *geometry.shapes.back().mesh;
 
   const std::vector<double> ms = interleavedMediansMs(kRounds, {
@@ -169,11 +181,11 @@ int main() {
       // Baseline 1: stb's PNG encoder (engine/scene encodePng) on one thread, plus writing
       // a file as large as the .glb: what embedding through the existing encoder costs.
       [&] {
-        for (const Image* image : images) if (!encodePng(*image)) std::abort();
+        for (const Image* image : images) if (stbPng(*image).empty()) std::abort();
         if (!writeFileAtomic(dir / "floor.bin", filler)) std::abort();
       },
-      [&] { for (const Image* image : images) if (!gltf::encodeTexturePng(*image)) std::abort(); },
       [&] { for (const Image* image : images) if (!encodePng(*image)) std::abort(); },
+      [&] { for (const Image* image : images) if (stbPng(*image).empty()) std::abort(); },
       [&] { if (!writeGltf(geometry, dir / "geometry.glb")) std::abort(); },
       // Baseline 2: copying the big mesh's arrays once and writing them: the I/O floor.
       [&] {
@@ -198,8 +210,8 @@ int main() {
   std::printf("  writeGltf .glb, textures + mesh          %8.1f  (%.1f MB)\n", ms[0], glbBytes->size() / 1e6);
   std::printf("  writeGltf .gltf, textures + mesh         %8.1f\n", ms[1]);
   std::printf("  baseline: stb PNGs + same-size write     %8.1f  -> writeGltf is %.2fx faster\n", ms[2], ms[2] / ms[0]);
-  std::printf("  PNGs only, one thread: encodeTexturePng  %8.1f  (%.2f MB)\n", ms[3], ourBytes / 1e6);
-  std::printf("  PNGs only, one thread: stb encodePng     %8.1f  (%.2f MB)  -> %.2fx slower\n", ms[4], stbBytes / 1e6,
+  std::printf("  PNGs only, one thread: encodePng         %8.1f  (%.2f MB)\n", ms[3], ourBytes / 1e6);
+  std::printf("  PNGs only, one thread: stb_image_write   %8.1f  (%.2f MB)  -> %.2fx slower\n", ms[4], stbBytes / 1e6,
               ms[4] / ms[3]);
   std::printf("  writeGltf .glb, geometry only            %8.1f  (%.1f MB)\n", ms[5], geometryBytes->size() / 1e6);
   std::printf("  baseline: copy arrays + write            %8.1f  -> writeGltf takes %.2fx\n", ms[6], ms[5] / ms[6]);

@@ -8,7 +8,7 @@
 
 #include "engine/gltf/gltf_document.h"
 #include "engine/gltf/gltf_mapping.h"
-#include "engine/gltf/png_encoder.h"
+#include "engine/scene/image.h"
 
 namespace pw::engine::gltf {
 
@@ -129,7 +129,7 @@ Status DocumentBuilder::embedImages() {
   // so they are encoded on as many threads as there are cores.
   std::atomic<size_t> next{0};
   auto work = [&] {
-    for (size_t i = next++; i < pendingImages_.size(); i = next++) encoded[i] = encodeTexturePng(*pendingImages_[i].image);
+    for (size_t i = next++; i < pendingImages_.size(); i = next++) encoded[i] = encodePng(*pendingImages_[i].image);
   };
   const size_t threadCount =
       std::min<size_t>(pendingImages_.size(), std::max(1u, std::thread::hardware_concurrency())) ;

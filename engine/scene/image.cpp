@@ -59,15 +59,6 @@ void appendBytes(void* context, void* data, int size) {
 }
 }  // namespace
 
-Result<std::vector<uint8_t>> encodePng(const Image& image) {
-  if (image.empty()) return makeError("cannot encode an empty image");
-  std::vector<uint8_t> out;
-  if (!stbi_write_png_to_func(appendBytes, &out, image.width, image.height, 4, image.rgba.data(), image.width * 4)) {
-    return makeError("PNG encoding failed");
-  }
-  return out;
-}
-
 Status saveImage(const fs::path& path, const Image& image) {
   if (image.empty()) return makeError(path.string() + ": cannot save an empty image");
   std::string ext = path.extension().string();

@@ -1,4 +1,8 @@
-#include "engine/gltf/png_encoder.h"
+// PNG encoding for every writer (textures beside VRML files, glTF embedding, saved
+// frames): rows filtered with PNG's Paeth predictor, zlib with the run-length
+// strategy, RGB when every pixel is opaque. Several times faster than stb_image_write
+// and about a third smaller on photos and rectified textures (bench/gltf_bench.cpp).
+#include "engine/scene/image.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -8,7 +12,7 @@
 
 #include <zlib.h>
 
-namespace pw::engine::gltf {
+namespace pw::engine {
 
 namespace {
 
@@ -44,7 +48,7 @@ bool opaque(const Image& image) {
 
 }  // namespace
 
-Result<std::vector<uint8_t>> encodeTexturePng(const Image& image) {
+Result<std::vector<uint8_t>> encodePng(const Image& image) {
   if (image.empty()) return makeError("cannot encode an empty image as PNG");
   const size_t width = static_cast<size_t>(image.width), height = static_cast<size_t>(image.height);
   if (image.rgba.size() != width * height * 4) return makeError("image pixel data does not match its size");
@@ -115,4 +119,4 @@ Result<std::vector<uint8_t>> encodeTexturePng(const Image& image) {
   return png;
 }
 
-}  // namespace pw::engine::gltf
+}  // namespace pw::engine
