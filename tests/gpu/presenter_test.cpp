@@ -16,9 +16,17 @@ namespace {
 
 class PresenterTest : public ::testing::Test {
  protected:
+  // GLFW is initialised once for the binary: terminating and re-initialising it
+  // between tests sometimes failed to reach the X server again.
+  static void SetUpTestSuite() { glfwReady_ = std::getenv("DISPLAY") && glfwInit(); }
+  static void TearDownTestSuite() {
+    if (glfwReady_) glfwTerminate();
+    glfwReady_ = false;
+  }
+
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (ctest runs this test under xvfb-run)";
-    ASSERT_TRUE(glfwInit()) << "GLFW cannot reach the X display";
+    ASSERT_TRUE(glfwReady_) << "GLFW cannot reach the X display";
     ASSERT_TRUE(glfwVulkanSupported());
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_ = glfwCreateWindow(320, 240, "photowalk presenter test", nullptr, nullptr);
@@ -43,7 +51,6 @@ class PresenterTest : public ::testing::Test {
     }
     renderer_.reset();
     if (window_) glfwDestroyWindow(window_);
-    glfwTerminate();
   }
 
   std::pair<int, int> framebufferSize() {
@@ -52,6 +59,7 @@ class PresenterTest : public ::testing::Test {
     return {w, h};
   }
 
+  static inline bool glfwReady_ = false;
   GLFWwindow* window_ = nullptr;
   std::unique_ptr<Renderer> renderer_;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
