@@ -131,23 +131,58 @@ std::vector<glm::vec3> creaseNormals(const PolygonSoup& soup, const std::vector<
     }
     return cornerNormals;
   }
-  // Faces around each point (compressed rows).
+  // Faces around each point (compressed rows); slotOfCorner finds a corner's entry.
   std::vector<uint32_t> rowStart(soup.points.size() + 1, 0);
   for (uint32_t p : soup.coord) ++rowStart[p + 1];
   for (size_t i = 1; i < rowStart.size(); ++i) rowStart[i] += rowStart[i - 1];
   std::vector<uint32_t> around(soup.coord.size());
+  std::vector<uint32_t> slotOfCorner(soup.coord.size());
   std::vector<uint32_t> fill(rowStart.begin(), rowStart.end() - 1);
   std::vector<uint32_t> faceOfCorner(soup.coord.size());
   for (size_t f = 0; f < faces; ++f) {
     for (uint32_t c = soup.faceStart[f]; c < soup.faceStart[f + 1]; ++c) {
       faceOfCorner[c] = static_cast<uint32_t>(f);
-      around[fill[soup.coord[c]]++] = static_cast<uint32_t>(f);
+      slotOfCorner[c] = fill[soup.coord[c]]++;
+      around[slotOfCorner[c]] = static_cast<uint32_t>(f);
     }
   }
   const double cosCrease = soup.creaseAngle >= 3.14159 ? -2.0 : std::cos(soup.creaseAngle);
-  std::vector<glm::dvec3> clusterSum;
-  std::vector<glm::vec3> clusterDir;
-  std::vector<uint32_t> clusterOf;
+
+  // Points with very many faces: greedy clusters of similar faces, made once per point
+  // (each slot gets its cluster's summed normal); linear in the valence where comparing
+  // every pair of faces would be quadratic.
+  constexpr size_t kMaxClusters = 64;
+  std::vector<glm::dvec3> clusterSums;          // all points' clusters, appended
+  std::vector<uint32_t> clusterOfSlot;          // per slot of a many-faced point
+  std::vector<glm::vec3> directions;
+  for (size_t p = 0; p < soup.points.size(); ++p) {
+    const uint32_t begin = rowStart[p], end = rowStart[p + 1];
+    if (end - begin <= kMaxPairwiseValence) continue;
+    if (clusterOfSlot.empty()) clusterOfSlot.assign(around.size(), 0);
+    directions.clear();
+    const size_t first = clusterSums.size();
+    for (uint32_t k = begin; k < end; ++k) {
+      const uint32_t g = around[k];
+      size_t chosen = directions.size();
+      for (size_t q = 0; q < directions.size(); ++q) {
+        if (glm::dot(directions[q], unit[g]) >= cosCrease) {
+          chosen = q;
+          break;
+        }
+      }
+      if (chosen == directions.size()) {
+        if (directions.size() >= kMaxClusters) {
+          chosen = directions.size() - 1;
+        } else {
+          directions.push_back(unit[g]);
+          clusterSums.emplace_back(0.0);
+        }
+      }
+      clusterSums[first + chosen] += faceNormals[g];
+      clusterOfSlot[k] = static_cast<uint32_t>(first + chosen);
+    }
+  }
+
   for (size_t c = 0; c < soup.coord.size(); ++c) {
     const uint32_t f = faceOfCorner[c];
     const uint32_t p = soup.coord[c];
@@ -159,36 +194,7 @@ std::vector<glm::vec3> creaseNormals(const PolygonSoup& soup, const std::vector<
         if (g == f || glm::dot(unit[f], unit[g]) >= cosCrease) sum += faceNormals[g];
       }
     } else {
-      // Greedy clusters of similar faces around this point; each corner takes its
-      // face's cluster. Linear in the valence instead of quadratic.
-      clusterSum.clear();
-      clusterDir.clear();
-      clusterOf.assign(end - begin, 0);
-      for (uint32_t k = begin; k < end; ++k) {
-        const uint32_t g = around[k];
-        size_t chosen = clusterDir.size();
-        for (size_t q = 0; q < clusterDir.size() && q < 64; ++q) {
-          if (glm::dot(clusterDir[q], unit[g]) >= cosCrease) {
-            chosen = q;
-            break;
-          }
-        }
-        if (chosen == clusterDir.size()) {
-          if (clusterDir.size() >= 64) chosen = clusterDir.size() - 1;
-          else {
-            clusterDir.push_back(unit[g]);
-            clusterSum.emplace_back(0.0);
-          }
-        }
-        clusterSum[chosen] += faceNormals[g];
-        clusterOf[k - begin] = static_cast<uint32_t>(chosen);
-      }
-      for (uint32_t k = begin; k < end; ++k) {
-        if (around[k] == f) {
-          sum = clusterSum[clusterOf[k - begin]];
-          break;
-        }
-      }
+      sum = clusterSums[clusterOfSlot[slotOfCorner[c]]];
     }
     cornerNormals[c] = safeNormalize(sum, unit[f]);
   }

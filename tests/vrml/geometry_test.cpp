@@ -158,6 +158,32 @@ TEST(VrmlFaceSet, CreaseAngleSplitsOrSmoothsNormals) {
   EXPECT_EQ(justBelow.shapes.at(0).mesh->positions.size(), 24u);
 }
 
+TEST(VrmlFaceSet, ManyFacesAroundOnePointSmoothWithinEachCrease) {
+  // A "tent" of 2000 triangles around the origin: half slope one way, half the other,
+  // 60 degrees apart. With creaseAngle 0.5 each side is smooth on its own: the centre
+  // gets exactly two normals, one per side (the clustered path for >256 faces).
+  constexpr int kFaces = 2000;
+  std::string points = "0 0 0", index;
+  for (int i = 0; i <= kFaces; ++i) {
+    const double a = 3.14159265358979 * 2 * i / kFaces;
+    const double x = std::cos(a), y = std::sin(a);
+    points += ", " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(x > 0 ? x * 0.577 : -x * 0.577);
+  }
+  for (int i = 0; i < kFaces; ++i) index += "0 " + std::to_string(i + 1) + " " + std::to_string(i + 2) + " -1 ";
+  const Scene s = read("Shape { geometry IndexedFaceSet { creaseAngle 0.5 coord Coordinate { point [ " + points +
+                       " ] } coordIndex [ " + index + " ] } }");
+  const Mesh& m = *s.shapes.at(0).mesh;
+  std::vector<glm::vec3> centre;
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    if (m.positions[i] == glm::vec3(0.0f)) centre.push_back(m.normals[i]);
+  }
+  ASSERT_EQ(centre.size(), 2u);
+  for (const glm::vec3& n : centre) {
+    EXPECT_NEAR(std::fabs(n.x), 0.5f, 0.02f);  // each side's own slope, (-+0.5, 0, 0.866)
+    EXPECT_NEAR(n.z, 0.866f, 0.02f);
+  }
+}
+
 TEST(VrmlFaceSet, ClockwiseFacesAreTurnedAround) {
   const Scene s = read(R"(Shape { geometry IndexedFaceSet { ccw FALSE
     coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] } coordIndex [ 0 1 2 ] } })");
