@@ -36,12 +36,27 @@ Status Parser::push(Frame frame) {
 }
 
 const Proto* Parser::findProto(std::string_view name) const {
-  const std::string key(name);
-  for (auto s = scopes_.rbegin(); s != scopes_.rend(); ++s) {
-    auto found = s->protos.find(key);
-    if (found != s->protos.end()) return found->second;
+  auto found = visibleProtos_.find(std::string(name));
+  return found == visibleProtos_.end() || found->second.empty() ? nullptr : found->second.back().second;
+}
+
+void Parser::declareProto(const std::string& name, const Proto* proto) {
+  auto& declarations = visibleProtos_[name];
+  if (!declarations.empty() && declarations.back().first == scopes_.size()) {
+    declarations.back().second = proto;  // a later PROTO of the same name in the same scope wins
+    return;
   }
-  return nullptr;
+  declarations.emplace_back(scopes_.size(), proto);
+  scope().protoNames.push_back(name);
+}
+
+void Parser::leaveScope() {
+  for (const std::string& name : scope().protoNames) {
+    auto found = visibleProtos_.find(name);
+    found->second.pop_back();
+    if (found->second.empty()) visibleProtos_.erase(found);
+  }
+  scopes_.pop_back();
 }
 
 Status Parser::run() {
@@ -118,9 +133,9 @@ Status Parser::stepStatements() {
                                                     at(f.open) + ") has no node; it needs at least one");
     }
     stack_.pop_back();
-    scopes_.pop_back();
+    leaveScope();
     const Proto* registered = proto.get();
-    scope().protos[proto->interface.name] = registered;
+    declareProto(proto->interface.name, registered);
     if (scopes_.size() == 1) doc_.topLevelProtos[proto->interface.name] = registered;
     doc_.protos.push_back(std::move(proto));
     return {};

@@ -132,7 +132,7 @@ Status Parser::parseExternProto() {
   PW_TRY(parseFieldValue(tokens_, FieldType::kMFString, urls, file_->displayName, "EXTERNPROTO url"));
   proto->urls = std::move(urls.strings);
   const Proto* registered = proto.get();
-  scope().protos[*name] = registered;
+  declareProto(*name, registered);
   if (scopes_.size() == 1) doc_.topLevelProtos[*name] = registered;
   doc_.protos.push_back(std::move(proto));
   return {};

@@ -44,7 +44,7 @@ class Parser {
   struct Scope {
     std::unordered_map<std::string, NodePtr> defs;
     std::unordered_set<std::string> skippedDefs;  // DEFs of nodes that were skipped
-    std::unordered_map<std::string, const Proto*> protos;
+    std::vector<std::string> protoNames;  // PROTOs declared here, to hide again on leaving
     const Proto* defining = nullptr;  // the PROTO whose body this scope is
   };
 
@@ -66,6 +66,9 @@ class Parser {
   void deliver(NodePtr node);
   void deliverList(std::vector<NodePtr> nodes);
   const Proto* findProto(std::string_view name) const;
+  // Makes a PROTO visible in the current scope (replacing one of the same name there).
+  void declareProto(const std::string& name, const Proto* proto);
+  void leaveScope();
   Scope& scope() { return scopes_.back(); }
 
   Result<Token> expect(TokenKind kind, const char* what);
@@ -81,6 +84,9 @@ class Parser {
   Diagnostics* diag_;
   std::vector<Frame> stack_;
   std::vector<Scope> scopes_;
+  // PROTO name -> the declarations visible now, innermost last, with the scope depth
+  // each was declared at: a lookup is one hash probe however deep the nesting.
+  std::unordered_map<std::string, std::vector<std::pair<size_t, const Proto*>>> visibleProtos_;
   bool routeNoted_ = false;
 };
 
