@@ -1,6 +1,5 @@
 // photowalk render: one frame of a scene to a PNG, offscreen (lavapipe when there is no GPU).
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <string>
 
@@ -31,15 +30,6 @@ constexpr const char* kUsage =
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "                        (as PW_DEVICE=cpu)\n"
     "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n";
-
-Result<int> parsePositiveInt(const std::string& text, const char* option) {
-  int value = 0;
-  auto r = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || value < 1) {
-    return makeError(std::string(option) + " wants a whole number from 1, not '" + text + "'");
-  }
-  return value;
-}
 
 int runRender(Args& args) {
   const auto output = args.value("--output", "-o");

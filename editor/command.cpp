@@ -110,4 +110,13 @@ Result<double> parseNumber(std::string_view text, std::string_view optionName) {
   return v;
 }
 
+Result<int> parsePositiveInt(std::string_view text, std::string_view optionName) {
+  int value = 0;
+  auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || value < 1) {
+    return makeError(std::string(optionName) + " wants a whole number from 1, not '" + std::string(text) + "'");
+  }
+  return value;
+}
+
 }  // namespace pw::editor

@@ -39,6 +39,7 @@ class Args {
 
 Result<std::pair<int, int>> parseSize(std::string_view text, std::string_view optionName);
 Result<double> parseNumber(std::string_view text, std::string_view optionName);
+Result<int> parsePositiveInt(std::string_view text, std::string_view optionName);
 
 struct Command {
   const char* name;

@@ -194,6 +194,8 @@ Status WalkApp::open() {
 
   engine::RendererOptions rendererOptions;
   rendererOptions.forceCpu = options_.forceCpu;
+  rendererOptions.profile = engine::RenderProfile::kInteractive;
+  rendererOptions.msaaSamples = options_.msaaSamples;
   uint32_t count = 0;
   const char** extensions = glfwGetRequiredInstanceExtensions(&count);
   if (!extensions) return makeError("cannot open a window: this display cannot show Vulkan (" + glfwLastError() + ")");
@@ -521,6 +523,8 @@ Result<WalkReport> WalkApp::run() {
   report.framesSimulated = frame_;
   report.framesDrawn = static_cast<long>(frameMs_.size());
   report.deviceName = renderer_->deviceName();
+  report.msaaSamples = renderer_->msaaSamples();
+  report.anisotropicFiltering = renderer_->anisotropicFiltering();
   if (frameMs_.size() > 1) {
     std::vector<double> sorted(frameMs_.begin() + 1, frameMs_.end());  // the first includes start-up
     double sum = 0;

@@ -18,6 +18,7 @@ struct WalkOptions {
   int height = 720;
   bool vsync = true;
   bool forceCpu = false;
+  int msaaSamples = 0;  // 0: the renderer's interactive default (4 on GPUs, 1 on lavapipe)
   double speedScale = 1.0;
   std::string title = "photowalk";
   std::optional<std::vector<walk::ReplayEvent>> replay;  // set: deterministic, input ignored
@@ -33,6 +34,8 @@ struct WalkReport {
   double medianFrameMs = 0;
   size_t validationMessages = 0;
   std::string deviceName;
+  int msaaSamples = 0;
+  bool anisotropicFiltering = false;
 };
 
 // Opens the window and walks until it is closed (or the replay quits). Errors: no

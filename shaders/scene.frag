@@ -13,6 +13,7 @@
 layout(constant_id = PW_SPEC_TEXTURED) const bool kTextured = false;
 layout(constant_id = PW_SPEC_LIT) const bool kLit = true;
 layout(constant_id = PW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
+layout(constant_id = PW_SPEC_PHOTO_TEXTURE) const bool kPhotoTexture = false;
 
 layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHTS) readonly buffer LightBlock { LightGpu lights[]; };
@@ -23,6 +24,7 @@ layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inWorldNormal;
 layout(location = 2) in vec2 inTexCoord;
 layout(location = 3) in vec4 inColor;
+layout(location = 4) in vec3 inPhoto;
 
 layout(location = 0) out vec4 outColor;
 
@@ -99,6 +101,27 @@ vec3 litColor(const vec3 OD, const MaterialGpu m) {
   return color;
 }
 
+// A texture cut from a photo holds no detail finer than one photo pixel; standard
+// mipmapping would filter a screen pixel's whole footprint over it and so blur the
+// photo's own pixels a second time (from the photo's camera, the walls' textures are
+// minified 4-16x and come out one photo pixel softer). Along each screen axis the
+// footprint J (in texels, or in photo pixels where those are larger) already carries
+// one such pixel of blur; the filter supplies the rest, sqrt(J^2 - 1), by scaling that
+// axis's gradient. Far away (J >> 1) this is ordinary mipmapping; from the photo's
+// camera (J = 1) it samples the full-resolution texture as the photo was seen.
+vec4 samplePhotoTexture(const vec2 uv) {
+  const vec2 photo = inPhoto.xy / inPhoto.z;
+  const vec2 texels = vec2(draw.textureSource[1].w, draw.textureSource[2].w);
+  const vec2 uvX = dFdx(uv), uvY = dFdy(uv);
+  const vec2 texelsX = uvX * texels, texelsY = uvY * texels, photoX = dFdx(photo), photoY = dFdy(photo);
+  // Squared footprints: no square roots but the two the scales need.
+  const float jX2 = max(min(dot(texelsX, texelsX), dot(photoX, photoX)), 1e-12);
+  const float jY2 = max(min(dot(texelsY, texelsY), dot(photoY, photoY)), 1e-12);
+  const float scaleX = sqrt(max(0.0, 1.0 - 1.0 / jX2));
+  const float scaleY = sqrt(max(0.0, 1.0 - 1.0 / jY2));
+  return textureGrad(shapeTexture, uv, uvX * scaleX, uvY * scaleY);
+}
+
 vec3 encodeSrgb(const vec3 linear) {
   const vec3 c = clamp(linear, 0.0, 1.0);
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
@@ -114,7 +137,9 @@ void main() {
     alpha *= inColor.a;
   }
   if (kTextured) {
-    const vec4 texel = texture(shapeTexture, inTexCoord);  // _SRGB format: already linear
+    // _SRGB format: already linear. A specialization constant, not a push constant:
+    // lavapipe ran both sides of a run-time branch around texture(), 40% of a frame.
+    const vec4 texel = kPhotoTexture ? samplePhotoTexture(inTexCoord) : texture(shapeTexture, inTexCoord);
     OD = texel.rgb;
     if ((flags & kMaterialTextureAlpha) != 0u) alpha = texel.a;
   }

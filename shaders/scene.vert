@@ -17,6 +17,7 @@ layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outWorldNormal;
 layout(location = 2) out vec2 outTexCoord;
 layout(location = 3) out vec4 outColor;
+layout(location = 4) out vec3 outPhoto;  // homogeneous photo pixel (textures cut from a photo)
 
 void main() {
   const vec4 world = shapes[draw.shapeIndex].model * vec4(inPosition, 1.0);
@@ -25,6 +26,8 @@ void main() {
   // VRML texture coordinates have t = 0 at the bottom of the image (6.48); our images
   // are stored top row first, so Vulkan's v = 0 is the top.
   outTexCoord = vec2(inTexCoord.x, 1.0 - inTexCoord.y);
+  // Linear in (u, v, 1), so interpolated perspective-correctly it is exact per pixel.
+  outPhoto = mat3(draw.textureSource[0].xyz, draw.textureSource[1].xyz, draw.textureSource[2].xyz) * vec3(outTexCoord, 1.0);
   outColor = inColor;
   gl_Position = frame.viewProjection * world;
   // Points need a size (Vulkan 27.10: undefined otherwise); ignored for other topologies.

@@ -53,6 +53,7 @@ PW_SHADER_CONST uint kLightSpot = 2u;
 #define PW_SPEC_TEXTURED 0     // sample set 2's texture
 #define PW_SPEC_LIT 1          // VRML97 lighting; false: no Material, the colour at full intensity
 #define PW_SPEC_ENCODE_SRGB 2  // a UNORM target: the shader applies the sRGB curve itself
+#define PW_SPEC_PHOTO_TEXTURE 3  // the texture was cut from a photo: filter at its footprint (scene.frag)
 
 // MaterialGpu.flags.x bits (decided per shape at run time: cheap either way).
 PW_SHADER_CONST uint kMaterialUnlit = 1u;          // no Material node (the pipeline is unlit too)
@@ -103,6 +104,10 @@ struct DrawPushConstants {
   uint padding1;
   uint padding2;
   MaterialGpu material;
+  // A texture cut from a photo (Texture::sourceFromTexCoord): the homography from the
+  // shader's (u, v), v = 0 at the top, to the photo's pixels, as three columns in xyz;
+  // textureSource[1].w and [2].w are the texture's width and height in texels.
+  vec4 textureSource[3];
 };
 
 #ifdef __cplusplus
@@ -114,7 +119,8 @@ static_assert(sizeof(LightGpu) == 80 && offsetof(LightGpu, positionType) == 16 &
 static_assert(sizeof(MaterialGpu) == 64 && offsetof(MaterialGpu, emissiveAlpha) == 16 &&
               offsetof(MaterialGpu, specularShininess) == 32 && offsetof(MaterialGpu, flags) == 48);
 static_assert(sizeof(ShapeGpu) == 128 && offsetof(ShapeGpu, normalMatrix) == 64);
-static_assert(sizeof(DrawPushConstants) == 80 && offsetof(DrawPushConstants, material) == 16);
+static_assert(sizeof(DrawPushConstants) == 128 && offsetof(DrawPushConstants, material) == 16 &&
+              offsetof(DrawPushConstants, textureSource) == 80);
 static_assert(sizeof(DrawPushConstants) <= 128, "the smallest maxPushConstantsSize Vulkan allows");
 }  // namespace pw::engine::gpu
 #endif

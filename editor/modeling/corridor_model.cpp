@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -33,15 +34,15 @@ cv::Matx33d planeToPhoto(const Measurement& m, const Panel& panel) {
   return k * columns;
 }
 
-// Photo pixels per metre on the surface at (s, t): the larger of the two directions.
-double localScale(const cv::Matx33d& h, double s, double t) {
+// Photo pixels per metre on the surface at (s, t) along s and along t.
+glm::dvec2 localScale(const cv::Matx33d& h, double s, double t) {
   const auto project = [&](double ss, double tt) {
     const cv::Vec3d p = h * cv::Vec3d(ss, tt, 1.0);
     return cv::Vec2d(p[0] / p[2], p[1] / p[2]);
   };
   const double d = 1e-3;
   const cv::Vec2d p = project(s, t);
-  return std::max(cv::norm(project(s + d, t) - p), cv::norm(project(s, t + d) - p)) / d;
+  return glm::dvec2(cv::norm(project(s + d, t) - p), cv::norm(project(s, t + d) - p)) / d;
 }
 
 bool visibleInPhoto(const cv::Matx33d& h, double s, double t, int width, int height) {
@@ -117,31 +118,33 @@ SurfaceTexture cutTexture(const std::vector<cv::Mat>& pyramid, const Measurement
   const double widthM = r.s1 - r.s0, heightM = r.t1 - r.t0;
   const cv::Matx33d h = planeToPhoto(m, panel);
 
-  // The photo's own best resolution on the part of the surface it shows.
-  double photoScale = 0;
+  // The photo's own best resolution along s and along t on the part of the surface it
+  // shows, and its least (for the pyramid level).
+  glm::dvec2 photoScale(0.0), leastScale(std::numeric_limits<double>::max());
   for (int j = 0; j <= 24; ++j) {
     for (int i = 0; i <= 24; ++i) {
       const double s = r.s0 + widthM * i / 24.0, t = r.t0 + heightM * j / 24.0;
-      if (visibleInPhoto(h, s, t, photo.cols, photo.rows)) photoScale = std::max(photoScale, localScale(h, s, t));
+      if (!visibleInPhoto(h, s, t, photo.cols, photo.rows)) continue;
+      const glm::dvec2 scale = localScale(h, s, t);
+      photoScale = glm::max(photoScale, scale);
+      leastScale = glm::min(leastScale, scale);
     }
   }
-  double pxPerM = options.pxPerM > 0 ? options.pxPerM : std::max(photoScale, 16.0);
-  pxPerM = std::min({pxPerM, options.maxTextureSide / widthM, options.maxTextureSide / heightM});
-  out.pxPerM = pxPerM;
-  const int texW = std::max(2, static_cast<int>(std::lround(widthM * pxPerM)));
-  const int texH = std::max(2, static_cast<int>(std::lround(heightM * pxPerM)));
+  if (photoScale.x == 0) leastScale = photoScale;
+  // Each axis has the photo's best density along it: a wall seen at a grazing angle has
+  // far more photo pixels per metre up than along, so texels need not be square (the
+  // geometry, not the image, carries the scale) and no detail the photo has is lost.
+  glm::dvec2 density = options.pxPerM > 0 ? glm::dvec2(options.pxPerM) : glm::max(photoScale, glm::dvec2(16.0));
+  density = glm::min(density, glm::dvec2(options.maxTextureSide / widthM, options.maxTextureSide / heightM));
+  out.pxPerM = std::min(density.x, density.y);
+  const int texW = std::max(2, static_cast<int>(std::lround(widthM * density.x)));
+  const int texH = std::max(2, static_cast<int>(std::lround(heightM * density.y)));
 
   // Pyramid level L holds pixel centres at (u + 0.5) / 2^L - 0.5. The photo's scale
   // varies over the plane; a level coarser than the texture where the photo is at
   // its coarsest would lose detail there, so the level follows the least scale seen.
-  double leastScale = photoScale;
-  for (int j = 0; j <= 24; ++j) {
-    for (int i = 0; i <= 24; ++i) {
-      const double s = r.s0 + widthM * i / 24.0, t = r.t0 + heightM * j / 24.0;
-      if (visibleInPhoto(h, s, t, photo.cols, photo.rows)) leastScale = std::min(leastScale, localScale(h, s, t));
-    }
-  }
-  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0, leastScale / pxPerM)))), 0,
+  const double shrink = std::min(leastScale.x / density.x, leastScale.y / density.y);
+  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0, shrink)))), 0,
                                static_cast<int>(pyramid.size()) - 1);
   const double k = 1.0 / (1 << level);
   const cv::Matx33d toLevel(k, 0, 0.5 * k - 0.5, 0, k, 0.5 * k - 0.5, 0, 0, 1);
@@ -175,6 +178,13 @@ SurfaceTexture cutTexture(const std::vector<cv::Mat>& pyramid, const Measurement
   meanColor = glm::vec3(mean[2], mean[1], mean[0]) / 255.0f;
   warped.setTo(mean, ~inside);
   out.image = toImage(warped);
+  // Texture coordinates (0..1 over the rect) to the photo's full-resolution pixels.
+  const cv::Matx33d photoFromTexCoord = h * cv::Matx33d(widthM, 0, r.s0, 0, heightM, r.t0, 0, 0, 1);
+  glm::mat3 columns;
+  for (int c = 0; c < 3; ++c) {
+    for (int row = 0; row < 3; ++row) columns[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
+  }
+  out.sourceFromTexCoord = columns;
   return out;
 }
 
@@ -271,6 +281,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       texture->url = model.name + "_" + surfaceName(surface) + ".png";
       // Clamp: a repeat would bleed the opposite edge into the seams between planes.
       texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
+      texture->sourceFromTexCoord = tex.sourceFromTexCoord;
       auto appearance = std::make_shared<engine::Appearance>();
       appearance->texture = texture;
       if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));

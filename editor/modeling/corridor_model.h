@@ -30,6 +30,7 @@ struct SurfaceTexture {
   engine::Image image;  // RGBA, sRGB; rows top to bottom = t from rect.t1 down to rect.t0
   double pxPerM = 0;
   double coveredFraction = 0;  // share of the texture the photo shows (the rest is filled)
+  glm::mat3 sourceFromTexCoord{1.0f};  // engine::Texture::sourceFromTexCoord
 };
 
 struct CorridorModel {

@@ -9,6 +9,7 @@
 
 #include "engine/gltf/gltf_mapping.h"
 #include "engine/scene/camera.h"
+#include "engine/scene/texture_source.h"
 
 namespace pw::engine::gltf {
 
@@ -76,7 +77,10 @@ int DocumentBuilder::addRootNode(Json node) {
 
 Status DocumentBuilder::build() {
   doc_["asset"] = Json{{"version", "2.0"}, {"generator", "photowalk"}};
-  if (!scene_.info.empty()) doc_["asset"]["extras"] = Json{{"info", scene_.info}};
+  const std::vector<std::string> info = infoWithTextureSources(scene_, [](const Texture& texture) {
+    return std::filesystem::path(texture.url).filename().string();  // the image's name (textureFor)
+  });
+  if (!info.empty()) doc_["asset"]["extras"] = Json{{"info", info}};
   PW_TRY(checkTextures(scene_));
   bin_.reserve(binaryBytesBound(scene_));
   for (size_t i = 0; i < scene_.shapes.size(); ++i) PW_TRY(addShape(i));

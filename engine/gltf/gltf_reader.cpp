@@ -7,6 +7,7 @@
 
 #include "base/atomic_file.h"
 #include "engine/gltf/gltf_read_source.h"
+#include "engine/scene/texture_source.h"
 
 namespace pw::engine {
 
@@ -139,7 +140,9 @@ Result<Scene> parseGltf(std::span<const uint8_t> bytes, const std::filesystem::p
   PW_TRY(checkAsset(source));
   PW_TRY(loadBuffers(source, bin, hasBin));
   try {
-    return gltf::buildScene(source);
+    auto scene = gltf::buildScene(source);
+    if (scene) applyTextureSources(*scene);
+    return scene;
   } catch (const Json::exception& e) {
     // Every member is checked before use; this only turns an oversight into an error.
     return source.error(std::string("malformed glTF: ") + e.what());

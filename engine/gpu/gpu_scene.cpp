@@ -214,8 +214,8 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   bufferWrite(PW_BINDING_SHAPES, &shapeInfo);
   for (uint32_t slot = 0; slot < textureSets; ++slot) {
     const Texture* texture = slot == 0 ? nullptr : packed.textures[slot - 1].texture;
-    imageInfos[slot].sampler = texture ? pipelines.sampler(texture->wrapS, texture->wrapT)
-                                       : pipelines.sampler(TextureWrap::kRepeat, TextureWrap::kRepeat);
+    imageInfos[slot].sampler = texture ? pipelines.sampler(texture->wrapS, texture->wrapT, texture->sourceFromTexCoord.has_value())
+                                       : pipelines.sampler(TextureWrap::kRepeat, TextureWrap::kRepeat, false);
     imageInfos[slot].imageView = out->textures[slot].view.get();
     imageInfos[slot].imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

@@ -34,7 +34,7 @@ constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_S
 
 }  // namespace
 
-Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& context) {
+Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& context, bool anisotropic) {
   const VkDevice device = context.device();
   std::unique_ptr<PipelineLibrary> lib(new PipelineLibrary(context));
   {
@@ -68,7 +68,10 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
   if (!frag) return frag.error();
   lib->fragmentShader_ = std::move(*frag);
 
-  for (int i = 0; i < 4; ++i) {
+  lib->anisotropic_ = anisotropic && context.anisotropySupported();
+  lib->cpuDevice_ = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  for (int i = 0; i < 8; ++i) {
+    const bool anisotropicSampler = lib->anisotropic_ && i >= 4;
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = VK_FILTER_LINEAR;
     info.minFilter = VK_FILTER_LINEAR;
@@ -76,8 +79,8 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
     info.addressModeU = (i & 1) ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
     info.addressModeV = (i & 2) ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE : VK_SAMPLER_ADDRESS_MODE_REPEAT;
     info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    info.anisotropyEnable = context.anisotropySupported() ? VK_TRUE : VK_FALSE;
-    info.maxAnisotropy = context.anisotropySupported() ? std::min(16.0f, context.properties().limits.maxSamplerAnisotropy) : 1.0f;
+    info.anisotropyEnable = anisotropicSampler ? VK_TRUE : VK_FALSE;
+    info.maxAnisotropy = anisotropicSampler ? std::min(16.0f, context.properties().limits.maxSamplerAnisotropy) : 1.0f;
     info.minLod = 0.0f;
     info.maxLod = VK_LOD_CLAMP_NONE;
     VkSampler sampler = VK_NULL_HANDLE;
@@ -92,13 +95,15 @@ Result<VkPipeline> PipelineLibrary::pipeline(VkFormat format, VkSampleCountFlagB
   if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second.get();
 
   // The fragment shader's specialization (shader_interface.h, PW_SPEC_*).
-  const VkBool32 constants[3] = {variant.textured ? VK_TRUE : VK_FALSE, variant.lit ? VK_TRUE : VK_FALSE,
-                                 isSrgbFormat(format) ? VK_FALSE : VK_TRUE};
-  static_assert(PW_SPEC_TEXTURED == 0 && PW_SPEC_LIT == 1 && PW_SPEC_ENCODE_SRGB == 2, "order of `constants`");
-  const VkSpecializationMapEntry entries[3] = {{PW_SPEC_TEXTURED, 0, sizeof(VkBool32)},
+  const VkBool32 constants[4] = {variant.textured ? VK_TRUE : VK_FALSE, variant.lit ? VK_TRUE : VK_FALSE,
+                                 isSrgbFormat(format) ? VK_FALSE : VK_TRUE, variant.photoTexture ? VK_TRUE : VK_FALSE};
+  static_assert(PW_SPEC_TEXTURED == 0 && PW_SPEC_LIT == 1 && PW_SPEC_ENCODE_SRGB == 2 && PW_SPEC_PHOTO_TEXTURE == 3,
+                "order of `constants`");
+  const VkSpecializationMapEntry entries[4] = {{PW_SPEC_TEXTURED, 0, sizeof(VkBool32)},
                                                {PW_SPEC_LIT, sizeof(VkBool32), sizeof(VkBool32)},
-                                               {PW_SPEC_ENCODE_SRGB, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
-  const VkSpecializationInfo specialization{3, entries, sizeof(constants), constants};
+                                               {PW_SPEC_ENCODE_SRGB, 2 * sizeof(VkBool32), sizeof(VkBool32)},
+                                               {PW_SPEC_PHOTO_TEXTURE, 3 * sizeof(VkBool32), sizeof(VkBool32)}};
+  const VkSpecializationInfo specialization{4, entries, sizeof(constants), constants};
   const VkPipelineShaderStageCreateInfo stages[] = {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertexShader_.get(), "main", nullptr},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fragmentShader_.get(), "main", &specialization},

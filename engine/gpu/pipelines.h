@@ -19,15 +19,23 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 class PipelineLibrary {
  public:
-  static Result<std::unique_ptr<PipelineLibrary>> create(const Context& context);
+  // `anisotropic`: anisotropic filtering where the device has it.
+  static Result<std::unique_ptr<PipelineLibrary>> create(const Context& context, bool anisotropic);
 
   VkDescriptorSetLayout frameSetLayout() const { return frameSetLayout_.get(); }
   VkDescriptorSetLayout sceneSetLayout() const { return sceneSetLayout_.get(); }
   VkDescriptorSetLayout textureSetLayout() const { return textureSetLayout_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }
-  VkSampler sampler(TextureWrap s, TextureWrap t) const {
-    return samplers_[(s == TextureWrap::kClamp ? 1 : 0) + (t == TextureWrap::kClamp ? 2 : 0)].get();
+  // The sampler for a texture. Textures cut from a photo (Texture::sourceFromTexCoord)
+  // pass their footprint as explicit gradients (scene.frag); a CPU device's anisotropic
+  // filter ignores those (llvmpipe takes its own from the implicit derivatives, which
+  // blurred brick walls seen from the photo's camera by 14 dB), so there they are
+  // filtered trilinearly.
+  VkSampler sampler(TextureWrap s, TextureWrap t, bool cutFromPhoto) const {
+    const bool anisotropic = !(cutFromPhoto && cpuDevice_);
+    return samplers_[(s == TextureWrap::kClamp ? 1 : 0) + (t == TextureWrap::kClamp ? 2 : 0) + (anisotropic ? 4 : 0)].get();
   }
+  bool anisotropic() const { return anisotropic_; }
 
   // The pipeline for drawing `variant` into a colour target of `format` with `samples`
   // and a kDepthFormat depth target, dynamic rendering.
@@ -42,7 +50,9 @@ class PipelineLibrary {
   OwnedPipelineLayout layout_;
   OwnedShaderModule vertexShader_;
   OwnedShaderModule fragmentShader_;
-  std::array<OwnedSampler, 4> samplers_;
+  bool anisotropic_ = false;
+  bool cpuDevice_ = false;
+  std::array<OwnedSampler, 8> samplers_;  // by wrap s, wrap t, anisotropic (when enabled)
   std::map<std::tuple<VkFormat, VkSampleCountFlagBits, int>, OwnedPipeline> pipelines_;
 };
 

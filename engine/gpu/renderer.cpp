@@ -124,7 +124,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& option
   impl->context = std::move(*context);
   const gpu::Context& ctx = *impl->context;
 
-  const int samples = options.msaaSamples;
+  const bool cpuDevice = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool keepFrameRate = options.profile == RenderProfile::kInteractive && cpuDevice;
+  const int samples = options.msaaSamples > 0 ? options.msaaSamples : keepFrameRate ? 1 : 4;
   const VkSampleCountFlags supported =
       ctx.properties().limits.framebufferColorSampleCounts & ctx.properties().limits.framebufferDepthSampleCounts;
   if (samples < 1 || samples > 64 || (samples & (samples - 1)) != 0 || !(supported & samples)) {
@@ -139,7 +141,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& option
     return makeError(std::string(ctx.properties().deviceName) + " cannot render to 32-bit float depth; use PW_DEVICE=cpu");
   }
 
-  auto pipelines = gpu::PipelineLibrary::create(ctx);
+  auto pipelines = gpu::PipelineLibrary::create(ctx, !keepFrameRate);
   if (!pipelines) return pipelines.error();
   impl->pipelines = std::move(*pipelines);
   auto pool = gpu::createFrameDescriptorPool(ctx, 1);
@@ -249,6 +251,7 @@ bool Renderer::validationEnabled() const { return impl_->context->validationEnab
 std::string Renderer::deviceName() const { return impl_->context->properties().deviceName; }
 bool Renderer::isCpuDevice() const { return impl_->context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 int Renderer::msaaSamples() const { return static_cast<int>(impl_->samples); }
+bool Renderer::anisotropicFiltering() const { return impl_->pipelines->anisotropic(); }
 FrameStats Renderer::lastFrameStats() const { return impl_->stats; }
 std::vector<std::string> Renderer::notes() const { return impl_->context->notes(); }
 VkInstance Renderer::instance() const { return impl_->context->instance(); }

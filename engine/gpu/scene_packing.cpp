@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "engine/gpu/color_space.h"
+#include "engine/scene/texture_source.h"
 
 namespace pw::engine::gpu {
 namespace {
@@ -76,6 +77,19 @@ LightGpu packLight(const Light& light) {
 }
 
 }  // namespace
+
+std::array<glm::vec4, 3> textureSourceColumns(const Texture& texture) {
+  if (!texture.sourceFromTexCoord) return {};
+  const glm::mat3 h = withFlippedT(*texture.sourceFromTexCoord);
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) {
+      if (!std::isfinite(h[c][r])) return {};
+    }
+  }
+  const float width = texture.image ? static_cast<float>(texture.image->width) : 1.0f;
+  const float height = texture.image ? static_cast<float>(texture.image->height) : 1.0f;
+  return {glm::vec4(h[0], 0.0f), glm::vec4(h[1], width), glm::vec4(h[2], height)};
+}
 
 glm::mat3 normalMatrix(const glm::mat4& model) {
   const glm::mat3 m(model);
@@ -197,8 +211,10 @@ Result<PackedScene> packScene(const Scene& scene) {
     draw.indexCount = static_cast<uint32_t>(mesh.indices.size());
     draw.vertexOffset = packed->second.vertexOffset;
     draw.textureSlot = textureSlot;
+    if (texture) draw.textureSource = textureSourceColumns(*texture);
     draw.variant.topology = mesh.topology;
     draw.variant.textured = textureSlot != 0;
+    draw.variant.photoTexture = texture && texture->sourceFromTexCoord && mesh.topology == Topology::kTriangles;
     draw.variant.lit = (flags & kMaterialUnlit) == 0;
     // The texture's alpha replaces the material's transparency (VRML97 4.14.3, table 4.5).
     const bool alphaFromTexture = textureAlpha;

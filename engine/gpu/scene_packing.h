@@ -3,6 +3,7 @@
 // drawn shape, the lights, and the draw lists. Pure CPU work, tested without Vulkan.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,8 +31,11 @@ struct PipelineVariant {
   bool blended = false;   // transparent: alpha blending, no depth writes, drawn back to front
   bool textured = false;  // PW_SPEC_TEXTURED
   bool lit = true;        // PW_SPEC_LIT
-  int index() const { return ((static_cast<int>(topology) * 2 + blended) * 2 + textured) * 2 + lit; }
-  static constexpr int kCount = 24;
+  bool photoTexture = false;  // PW_SPEC_PHOTO_TEXTURE: the texture was cut from a photo
+  int index() const {
+    return (((static_cast<int>(topology) * 2 + blended) * 2 + textured) * 2 + lit) * 2 + photoTexture;
+  }
+  static constexpr int kCount = 48;
 };
 
 struct DrawItem {
@@ -41,6 +45,7 @@ struct DrawItem {
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   uint32_t textureSlot = 0;  // 0: none (a 1x1 white texture), else PackedScene::textures[slot - 1]
+  std::array<glm::vec4, 3> textureSource{};  // pushed with the draw (DrawPushConstants::textureSource)
   PipelineVariant variant;
   bool cullBackFaces = true;      // solid TRUE
   bool clockwiseFront = false;    // a mirroring transform (negative determinant) flips the winding
@@ -68,6 +73,10 @@ struct PackedScene {
 // attribute arrays of the wrong length, a texture without pixels, non-finite numbers.
 // Shapes without a mesh or with nothing to draw are skipped.
 Result<PackedScene> packScene(const Scene& scene);
+
+// DrawPushConstants::textureSource for a texture: its Texture::sourceFromTexCoord
+// taken to the shader's texture coordinates (v = 1 - t), or all zero without one.
+std::array<glm::vec4, 3> textureSourceColumns(const Texture& texture);
 
 // The inverse transpose of the upper 3x3, computed as the cofactor matrix so that
 // singular transforms (a zero scale) still give finite normals; the shader normalises.

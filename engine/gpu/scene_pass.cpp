@@ -40,7 +40,7 @@ class DrawState {
       vkCmdSetFrontFace(cmd_, d.clockwiseFront ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
       front_ = front;
     }
-    const DrawPushConstants push{d.shapeIndex, 0, 0, 0, d.material};
+    const DrawPushConstants push{d.shapeIndex, 0, 0, 0, d.material, {d.textureSource[0], d.textureSource[1], d.textureSource[2]}};
     vkCmdPushConstants(cmd_, pipelines_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(push), &push);
     vkCmdDrawIndexed(cmd_, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);

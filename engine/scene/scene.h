@@ -39,6 +39,13 @@ struct Texture {
   std::string url;                     // as named in the source file ("" if made in code)
   TextureWrap wrapS = TextureWrap::kRepeat;
   TextureWrap wrapT = TextureWrap::kRepeat;
+  // A texture cut from a photo (photowalk build): the plane homography from texture
+  // coordinates (s, t, 1), t = 0 at the bottom, to the photo's pixels (u w, v w, w).
+  // The texture holds no detail finer than one photo pixel, so the renderer filters it
+  // for the part of a screen pixel's footprint beyond that pixel, not all of it, and a
+  // view from the photo's camera gives the photo back unblurred. Files keep it as a
+  // photowalk extension (texture_source.h).
+  std::optional<glm::mat3> sourceFromTexCoord;
 };
 
 // A shape with no material is drawn unlit (VRML97 6.5: full intensity texture or

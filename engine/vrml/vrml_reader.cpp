@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "base/atomic_file.h"
+#include "engine/scene/texture_source.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_parser.h"
 #include "engine/vrml/vrml_scene_builder.h"
@@ -88,7 +89,9 @@ Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics) {
   FileLoader loader(diagnostics);
   auto document = loader.load(path);
   if (!document) return document.error();
-  return vrml::buildScene(*document, loader, diagnostics);
+  auto scene = vrml::buildScene(*document, loader, diagnostics);
+  if (scene) applyTextureSources(*scene);
+  return scene;
 }
 
 Result<Scene> readVrmlString(std::string_view text, const fs::path& baseDir, Diagnostics* diagnostics,
@@ -96,7 +99,9 @@ Result<Scene> readVrmlString(std::string_view text, const fs::path& baseDir, Dia
   auto document = parseBytes(text, sourceFile({}, baseDir, std::string(nameForMessages)), diagnostics);
   if (!document) return document.error();
   FileLoader loader(diagnostics);
-  return vrml::buildScene(std::make_shared<vrml::Document>(std::move(*document)), loader, diagnostics);
+  auto scene = vrml::buildScene(std::make_shared<vrml::Document>(std::move(*document)), loader, diagnostics);
+  if (scene) applyTextureSources(*scene);
+  return scene;
 }
 
 }  // namespace pw::engine

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "base/atomic_file.h"
+#include "engine/scene/texture_source.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_tokenizer.h"
 #include "engine/vrml/vrml_transform.h"
@@ -197,17 +198,21 @@ void Writer::writeHeader() {
   line("# Written by photowalk");
   line("");
   const std::string& title = options_.title.empty() ? scene_.title : options_.title;
-  if (!title.empty() || !scene_.info.empty()) {
+  const std::vector<std::string> info = infoWithTextureSources(scene_, [&](const Texture& texture) {
+    auto url = urls_.find(texture.image.get());
+    return url == urls_.end() ? std::string() : url->second;
+  });
+  if (!title.empty() || !info.empty()) {
     open("WorldInfo");
     if (!title.empty()) {
       std::string s = "title ";
       appendString(s, title);
       line(s);
     }
-    if (!scene_.info.empty()) {
+    if (!info.empty()) {
       line("info [");
       ++indent_;
-      for (const std::string& i : scene_.info) {
+      for (const std::string& i : info) {
         std::string s;
         appendString(s, i);
         line(s + ",");

@@ -39,6 +39,44 @@ TEST(SrgbTransfer, RoundTripsAndHitsKnownValues) {
   }
 }
 
+// Textures cut from a photo get their own pipeline (the footprint-aware filter) and
+// push their homography, taken to the shader's v = 1 - t, with the texture's size.
+TEST(PackScene, PhotoTexturesGetTheFootprintPipelineAndTheirHomography) {
+  auto image = std::make_shared<Image>();
+  image->width = 4;
+  image->height = 2;
+  image->rgba.assign(4 * 2 * 4, 255);
+  auto photo = std::make_shared<Texture>();
+  photo->image = image;
+  photo->sourceFromTexCoord = glm::mat3(glm::vec3(100, 0, 0), glm::vec3(0, 50, 0), glm::vec3(10, 20, 1));
+  auto plain = std::make_shared<Texture>();
+  plain->image = image;
+  Scene scene;
+  for (const auto& texture : {photo, plain}) {
+    Shape shape = shapeOf(triangle(), std::nullopt);
+    auto appearance = std::make_shared<Appearance>();
+    appearance->texture = texture;
+    shape.appearance = appearance;
+    scene.shapes.push_back(shape);
+  }
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok()) << packed.message();
+  ASSERT_EQ(packed->opaque.size(), 2u);
+  const DrawItem& a = packed->opaque[0].shapeIndex == 0 ? packed->opaque[0] : packed->opaque[1];
+  const DrawItem& b = packed->opaque[0].shapeIndex == 0 ? packed->opaque[1] : packed->opaque[0];
+  EXPECT_TRUE(a.variant.photoTexture);
+  EXPECT_FALSE(b.variant.photoTexture);
+  EXPECT_NE(a.variant.index(), b.variant.index());
+  // (u, v) = (0.5, 0.25) is (s, t) = (0.5, 0.75): photo pixel (60, 57.5).
+  const glm::mat3 h(glm::vec3(a.textureSource[0]), glm::vec3(a.textureSource[1]), glm::vec3(a.textureSource[2]));
+  const glm::vec3 p = h * glm::vec3(0.5f, 0.25f, 1.0f);
+  EXPECT_FLOAT_EQ(p.x / p.z, 60.0f);
+  EXPECT_FLOAT_EQ(p.y / p.z, 57.5f);
+  EXPECT_EQ(a.textureSource[1].w, 4.0f);
+  EXPECT_EQ(a.textureSource[2].w, 2.0f);
+  EXPECT_EQ(b.textureSource[0], glm::vec4(0.0f));
+}
+
 TEST(NormalMatrix, IsTheInverseTransposeUpToScale) {
   const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, 1.0f)), 0.7f, glm::vec3(1, 2, 3));
   const glm::mat3 expected = glm::transpose(glm::inverse(glm::mat3(model)));
