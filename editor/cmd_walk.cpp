@@ -74,11 +74,12 @@ int runWalk(Args& args) {
 
   auto report = runWalkWindow(*scene, options);
   if (!report) return fail(report.message());
-  std::printf("walk: %ld frames drawn, %ld simulated; frame time median %.2f ms (%.1f fps), mean %.2f ms; %s, %dx MSAA, %s\n",
+  std::printf("walk: %ld frames drawn, %ld simulated; frame time median %.2f ms (%.1f fps), mean %.2f ms; %s, %dx MSAA, %s, %s\n",
               report->framesDrawn, report->framesSimulated, report->medianFrameMs,
               report->medianFrameMs > 0 ? 1000.0 / report->medianFrameMs : 0.0, report->meanFrameMs,
               report->deviceName.c_str(), report->msaaSamples,
-              report->anisotropicFiltering ? "anisotropic filtering" : "trilinear filtering");
+              report->anisotropicFiltering ? "anisotropic filtering" : "trilinear filtering",
+              report->perVertexLighting ? "lit per vertex" : "lit per pixel");
   return kExitOk;
 }
 

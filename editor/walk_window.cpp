@@ -525,6 +525,7 @@ Result<WalkReport> WalkApp::run() {
   report.deviceName = renderer_->deviceName();
   report.msaaSamples = renderer_->msaaSamples();
   report.anisotropicFiltering = renderer_->anisotropicFiltering();
+  report.perVertexLighting = renderer_->perVertexLighting();
   if (frameMs_.size() > 1) {
     std::vector<double> sorted(frameMs_.begin() + 1, frameMs_.end());  // the first includes start-up
     double sum = 0;

@@ -36,6 +36,7 @@ struct WalkReport {
   std::string deviceName;
   int msaaSamples = 0;
   bool anisotropicFiltering = false;
+  bool perVertexLighting = false;
 };
 
 // Opens the window and walks until it is closed (or the replay quits). Errors: no

@@ -1,11 +1,6 @@
-// Per-pixel VRML97 lighting (ISO/IEC 14772-1, 4.14.4), in linear light:
-//   I = OE + SUM_i( on_i * attenuation_i * spot_i * IL_i * (ambient_i + diffuse_i + specular_i) )
-//   attenuation_i = 1 / max(a0 + a1 d + a2 d^2, 1)   (1 for directional lights)
-//   ambient_i  = Ia_i * OD * Oa
-//   diffuse_i  = I_i * OD * (N . L)
-//   specular_i = I_i * OS * (N . normalize(L + V))^(shininess * 128)
-// with OD the diffuse colour replaced by the per-vertex colour or the texture (4.14.3,
-// table 4.5), and no fog. Shapes without a Material are unlit (6.5): the colour as is.
+// The scene's fragments: the colour (material, per-vertex colour or texture) lit by
+// the VRML97 lighting equations (lighting.glsl) per pixel, or per vertex in the
+// interactive profile on CPU devices; shapes without a Material are unlit (6.5).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shader_interface.h"
@@ -14,6 +9,7 @@ layout(constant_id = PW_SPEC_TEXTURED) const bool kTextured = false;
 layout(constant_id = PW_SPEC_LIT) const bool kLit = true;
 layout(constant_id = PW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
 layout(constant_id = PW_SPEC_PHOTO_TEXTURE) const bool kPhotoTexture = false;
+layout(constant_id = PW_SPEC_VERTEX_LIGHTING) const bool kVertexLighting = false;
 
 layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHTS) readonly buffer LightBlock { LightGpu lights[]; };
@@ -25,80 +21,25 @@ layout(location = 1) in vec3 inWorldNormal;
 layout(location = 2) in vec2 inTexCoord;
 layout(location = 3) in vec4 inColor;
 layout(location = 4) in vec3 inPhoto;
+layout(location = 5) in vec3 inDiffuseLight;   // kVertexLighting: LightTerms for the front face,
+layout(location = 6) in vec3 inSpecularLight;
+layout(location = 7) in vec3 inBackDiffuseLight;  // and for the back (two-sided materials)
+layout(location = 8) in vec3 inBackSpecularLight;
 
 layout(location = 0) out vec4 outColor;
 
-// ambient_i + diffuse_i + specular_i for a unit vector L towards the light, times IL_i.
-vec3 lightSum(const vec3 color, const float intensity, const float ambientIntensity, const vec3 L, const vec3 N,
-              const vec3 V, const vec3 OD, const MaterialGpu m) {
-  const float nDotL = dot(N, L);
-  vec3 sum = ambientIntensity * OD * m.diffuseAmbient.a + intensity * OD * max(nDotL, 0.0);
-  // Most materials have no specular colour. The test is on a push constant, so it is a
-  // real branch on every device and those materials never pay for pow().
-  if (m.flags.y != 0u) {
-    const vec3 halfway = L + V;
-    const float halfLength = length(halfway);
-    const float nDotH = halfLength > 0.0 ? max(dot(N, halfway / halfLength), 0.0) : 0.0;
-    const float exponent = m.specularShininess.a;
-    const float highlight = exponent > 0.0 ? pow(nDotH, exponent) : 1.0;
-    sum += nDotL > 0.0 ? intensity * m.specularShininess.rgb * highlight : vec3(0.0);
-  }
-  return color * sum;
-}
-
-// Point and spot lights: L, d and the attenuation (0 beyond the radius).
-float pointAttenuation(const LightGpu light, const vec3 P, const vec3 N, out vec3 L) {
-  const vec3 toLight = light.positionType.xyz - P;
-  const float d = length(toLight);
-  L = d > 0.0 ? toLight / d : N;
-  const vec3 a = light.attenuationRadius.xyz;
-  return d > light.attenuationRadius.w ? 0.0 : 1.0 / max(a.x + a.y * d + a.z * d * d, 1.0);
-}
-
-// The VRML97 spot factor (4.14.4): 1 inside beamWidth, 0 beyond cutOffAngle, linear
-// in the angle between.
-float spotFactor(const LightGpu light, const vec3 L) {
-  const float spotAngle = acos(clamp(dot(-L, light.directionAmbient.xyz), -1.0, 1.0));
-  const float beamWidth = light.spot.x;
-  const float cutOffAngle = light.spot.y;
-  if (spotAngle >= cutOffAngle) return 0.0;
-  if (spotAngle <= beamWidth) return 1.0;
-  return (spotAngle - cutOffAngle) / (beamWidth - cutOffAngle);
-}
+#include "lighting.glsl"
 
 vec3 litColor(const vec3 OD, const MaterialGpu m) {
-  vec3 N = normalize(inWorldNormal);
-  if ((m.flags.x & kMaterialTwoSided) != 0u && !gl_FrontFacing) N = -N;
-  const vec3 P = inWorldPosition;
-  const vec3 V = normalize(frame.cameraPosition.xyz - P);
-  vec3 color = m.emissiveAlpha.rgb;
-  // Lights are sorted by kind; the counts come from a uniform, so every loop is a real
-  // loop on every device, and a kind the scene lacks costs nothing.
-  uint i = 0u;
-  for (uint end = frame.lightCounts.x; i < end; ++i) {
-    const LightGpu light = lights[i];
-    color += lightSum(light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w,
-                      -light.directionAmbient.xyz, N, V, OD, m);
+  const bool back = (m.flags.x & kMaterialTwoSided) != 0u && !gl_FrontFacing;
+  LightTerms terms;
+  if (kVertexLighting) {
+    terms = back ? LightTerms(inBackDiffuseLight, inBackSpecularLight) : LightTerms(inDiffuseLight, inSpecularLight);
+  } else {
+    const vec3 N = normalize(inWorldNormal);
+    terms = lightTerms(inWorldPosition, back ? -N : N, m);
   }
-  for (uint end = i + frame.lightCounts.y; i < end; ++i) {
-    const LightGpu light = lights[i];
-    vec3 L;
-    const float attenuation = pointAttenuation(light, P, N, L);
-    color += attenuation * lightSum(light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w, L, N,
-                                    V, OD, m);
-  }
-  for (uint end = i + frame.lightCounts.z; i < end; ++i) {
-    const LightGpu light = lights[i];
-    vec3 L;
-    const float attenuation = pointAttenuation(light, P, N, L) * spotFactor(light, L);
-    color += attenuation * lightSum(light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w, L, N,
-                                    V, OD, m);
-  }
-  if (frame.lightCounts.w != 0u) {
-    // The headlight: a white directional light along the view, intensity 1, no ambient (6.29).
-    color += lightSum(vec3(1.0), 1.0, 0.0, -frame.headlightDirection.xyz, N, V, OD, m);
-  }
-  return color;
+  return m.emissiveAlpha.rgb + OD * terms.diffuse + terms.specular;
 }
 
 // A texture cut from a photo holds no detail finer than one photo pixel; standard

@@ -1,5 +1,6 @@
 // Scene vertices: local to world by the shape's transform, world to clip by the frame's
-// camera. Shared by the triangle, line and point pipelines.
+// camera. Shared by the triangle, line and point pipelines. In the interactive profile
+// on CPU devices (kVertexLighting) the VRML97 lighting is worked out here, per vertex.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shader_interface.h"
@@ -11,13 +12,23 @@ layout(location = PW_LOCATION_COLOR) in vec4 inColor;
 
 layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_SHAPES) readonly buffer ShapeBlock { ShapeGpu shapes[]; };
+layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHTS) readonly buffer LightBlock { LightGpu lights[]; };
 layout(push_constant) uniform PushBlock { DrawPushConstants draw; };
+
+layout(constant_id = PW_SPEC_LIT) const bool kLit = true;
+layout(constant_id = PW_SPEC_VERTEX_LIGHTING) const bool kVertexLighting = false;
+
+#include "lighting.glsl"
 
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outWorldNormal;
 layout(location = 2) out vec2 outTexCoord;
 layout(location = 3) out vec4 outColor;
 layout(location = 4) out vec3 outPhoto;  // homogeneous photo pixel (textures cut from a photo)
+layout(location = 5) out vec3 outDiffuseLight;  // kVertexLighting: LightTerms, front and back
+layout(location = 6) out vec3 outSpecularLight;
+layout(location = 7) out vec3 outBackDiffuseLight;
+layout(location = 8) out vec3 outBackSpecularLight;
 
 void main() {
   const vec4 world = shapes[draw.shapeIndex].model * vec4(inPosition, 1.0);
@@ -30,6 +41,22 @@ void main() {
   outPhoto = mat3(draw.textureSource[0].xyz, draw.textureSource[1].xyz, draw.textureSource[2].xyz) * vec3(outTexCoord, 1.0);
   outColor = inColor;
   gl_Position = frame.viewProjection * world;
+  if (kLit && kVertexLighting) {
+    const vec3 N = normalize(outWorldNormal);
+    const LightTerms front = lightTerms(world.xyz, N, draw.material);
+    outDiffuseLight = front.diffuse;
+    outSpecularLight = front.specular;
+    if ((draw.material.flags.x & kMaterialTwoSided) != 0u) {
+      const LightTerms back = lightTerms(world.xyz, -N, draw.material);
+      outBackDiffuseLight = back.diffuse;
+      outBackSpecularLight = back.specular;
+    } else {
+      outBackDiffuseLight = front.diffuse;
+      outBackSpecularLight = front.specular;
+    }
+  } else {
+    outDiffuseLight = outSpecularLight = outBackDiffuseLight = outBackSpecularLight = vec3(0.0);
+  }
   // Points need a size (Vulkan 27.10: undefined otherwise); ignored for other topologies.
   gl_PointSize = 1.0;
 }

@@ -47,13 +47,15 @@ PW_SHADER_CONST uint kLightDirectional = 0u;
 PW_SHADER_CONST uint kLightPoint = 1u;
 PW_SHADER_CONST uint kLightSpot = 2u;
 
-// Fragment-shader specialization constants (constant_id): each pipeline is compiled
+// Specialization constants (constant_id; the vertex shader reads LIT and
+// VERTEX_LIGHTING): each pipeline is compiled
 // for one combination, so that the CPU device (lavapipe), which runs both sides of
 // a branch it cannot prove uniform, never pays for texturing or lighting it skips.
 #define PW_SPEC_TEXTURED 0     // sample set 2's texture
 #define PW_SPEC_LIT 1          // VRML97 lighting; false: no Material, the colour at full intensity
 #define PW_SPEC_ENCODE_SRGB 2  // a UNORM target: the shader applies the sRGB curve itself
 #define PW_SPEC_PHOTO_TEXTURE 3  // the texture was cut from a photo: filter at its footprint (scene.frag)
+#define PW_SPEC_VERTEX_LIGHTING 4  // light per vertex (scene.vert), not per pixel: CPU devices, interactive
 
 // MaterialGpu.flags.x bits (decided per shape at run time: cheap either way).
 PW_SHADER_CONST uint kMaterialUnlit = 1u;          // no Material node (the pipeline is unlit too)

@@ -248,6 +248,9 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                                       : "photowalk: building of " + std::to_string(corridors.size()) + " corridors";
   scene.backgroundColor = glm::vec3(0.0f);
 
+  // Lit: 0.5 m cells, so that viewers and renderers that light per vertex (Gouraud,
+  // as VRML97 browsers did; photowalk walk on a CPU) show each lamp's pool of light.
+  const double cellM = options.lit ? 0.5 : 0.0;
   for (size_t c = 0; c < corridors.size(); ++c) {
     const CorridorModel& model = corridors[c];
     const glm::mat4 transform(plan.worldFromCorridor[c]);
@@ -276,6 +279,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       Panel textured = surfacePanel(surface, model.box, model.photoNearM);
       textured.textureRect = tex.rect;
       textured.openings = openingsOf(surface);
+      textured.maxCellM = cellM;
       auto texture = std::make_shared<engine::Texture>();
       texture->image = std::make_shared<engine::Image>(tex.image);
       texture->url = model.name + "_" + surfaceName(surface) + ".png";
@@ -291,6 +295,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
         Panel strip = surfacePanel(surface, model.box, model.untexturedNearM);
         strip.extent = stripBeyond(strip.extent, textured.extent);
         strip.openings = textured.openings;
+        strip.maxCellM = cellM;
         if (!strip.extent.empty()) {
           const glm::vec4 color(model.meanColor[s], 1.0f);
           addShape(panelMesh(strip, options.lit ? std::nullopt : std::optional(color)), untextured(model.meanColor[s]),
@@ -301,6 +306,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
     if (plan.attached[c]) {  // close the near end around the opening into the host
       Panel nearEnd = surfacePanel(Surface::kNearEnd, model.box);
       nearEnd.openings = openingsOf(Surface::kNearEnd);
+      nearEnd.maxCellM = cellM;
       const glm::vec4 color(model.meanColor[0], 1.0f);
       addShape(panelMesh(nearEnd, options.lit ? std::nullopt : std::optional(color)), untextured(model.meanColor[0]),
                "near_end");

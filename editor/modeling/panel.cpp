@@ -1,6 +1,7 @@
 #include "editor/modeling/panel.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pw::modeling {
 
@@ -10,7 +11,7 @@ Rect intersect(const Rect& a, const Rect& b) {
 
 namespace {
 
-std::vector<double> breaks(double lo, double hi, const std::vector<Rect>& openings, bool alongS) {
+std::vector<double> breaks(double lo, double hi, const std::vector<Rect>& openings, bool alongS, double maxCell) {
   std::vector<double> out{lo, hi};
   for (const Rect& o : openings) {
     const double edges[2] = {alongS ? o.s0 : o.t0, alongS ? o.s1 : o.t1};
@@ -20,7 +21,14 @@ std::vector<double> breaks(double lo, double hi, const std::vector<Rect>& openin
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end(), [](double x, double y) { return std::abs(x - y) < 1e-9; }), out.end());
-  return out;
+  if (maxCell <= 0) return out;
+  std::vector<double> fine;
+  for (size_t i = 0; i + 1 < out.size(); ++i) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil((out[i + 1] - out[i]) / maxCell - 1e-9)));
+    for (int k = 0; k < pieces; ++k) fine.push_back(out[i] + (out[i + 1] - out[i]) * k / pieces);
+  }
+  fine.push_back(out.back());
+  return fine;
 }
 
 bool insideAnOpening(const std::vector<Rect>& openings, double s, double t) {
@@ -38,8 +46,8 @@ engine::Mesh panelMesh(const Panel& panel, const std::optional<glm::vec4>& color
     const Rect clipped = intersect(o, panel.extent);
     if (!clipped.empty()) openings.push_back(clipped);
   }
-  const std::vector<double> ss = breaks(panel.extent.s0, panel.extent.s1, openings, true);
-  const std::vector<double> ts = breaks(panel.extent.t0, panel.extent.t1, openings, false);
+  const std::vector<double> ss = breaks(panel.extent.s0, panel.extent.s1, openings, true, panel.maxCellM);
+  const std::vector<double> ts = breaks(panel.extent.t0, panel.extent.t1, openings, false, panel.maxCellM);
   const glm::vec3 normal(panel.normal());
 
   // One vertex per grid point, shared by the cells around it.

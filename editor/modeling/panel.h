@@ -29,6 +29,9 @@ struct Panel {
   // (VRML: t = 0 at the image's bottom). Unset: no texture coordinates.
   std::optional<Rect> textureRect;
   std::vector<Rect> openings;
+  // Cells no longer than this (metres; 0: as few as the openings allow), so that a
+  // renderer lighting per vertex sees the light fall off along a long wall.
+  double maxCellM = 0;
 
   glm::dvec3 point(double s, double t) const { return origin + s * sAxis + t * tAxis; }
   glm::dvec3 normal() const { return glm::normalize(glm::cross(sAxis, tAxis)); }

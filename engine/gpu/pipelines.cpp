@@ -34,14 +34,15 @@ constexpr VkShaderStageFlags kGraphicsStages = VK_SHADER_STAGE_VERTEX_BIT | VK_S
 
 }  // namespace
 
-Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& context, bool anisotropic) {
+Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& context, bool anisotropic,
+                                                                  bool vertexLighting) {
   const VkDevice device = context.device();
   std::unique_ptr<PipelineLibrary> lib(new PipelineLibrary(context));
   {
     auto frame = makeSetLayout(device, {{PW_BINDING_FRAME_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kGraphicsStages, nullptr}});
     if (!frame) return frame.error();
     lib->frameSetLayout_ = std::move(*frame);
-    auto scene = makeSetLayout(device, {{PW_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+    auto scene = makeSetLayout(device, {{PW_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kGraphicsStages, nullptr},
                                         {PW_BINDING_SHAPES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
     if (!scene) return scene.error();
     lib->sceneSetLayout_ = std::move(*scene);
@@ -69,6 +70,7 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
   lib->fragmentShader_ = std::move(*frag);
 
   lib->anisotropic_ = anisotropic && context.anisotropySupported();
+  lib->vertexLighting_ = vertexLighting;
   lib->cpuDevice_ = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   for (int i = 0; i < 8; ++i) {
     const bool anisotropicSampler = lib->anisotropic_ && i >= 4;
@@ -95,17 +97,18 @@ Result<VkPipeline> PipelineLibrary::pipeline(VkFormat format, VkSampleCountFlagB
   if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second.get();
 
   // The fragment shader's specialization (shader_interface.h, PW_SPEC_*).
-  const VkBool32 constants[4] = {variant.textured ? VK_TRUE : VK_FALSE, variant.lit ? VK_TRUE : VK_FALSE,
-                                 isSrgbFormat(format) ? VK_FALSE : VK_TRUE, variant.photoTexture ? VK_TRUE : VK_FALSE};
-  static_assert(PW_SPEC_TEXTURED == 0 && PW_SPEC_LIT == 1 && PW_SPEC_ENCODE_SRGB == 2 && PW_SPEC_PHOTO_TEXTURE == 3,
+  const VkBool32 constants[5] = {variant.textured ? VK_TRUE : VK_FALSE, variant.lit ? VK_TRUE : VK_FALSE,
+                                 isSrgbFormat(format) ? VK_FALSE : VK_TRUE, variant.photoTexture ? VK_TRUE : VK_FALSE,
+                                 vertexLighting_ ? VK_TRUE : VK_FALSE};
+  static_assert(PW_SPEC_TEXTURED == 0 && PW_SPEC_LIT == 1 && PW_SPEC_ENCODE_SRGB == 2 && PW_SPEC_PHOTO_TEXTURE == 3 &&
+                    PW_SPEC_VERTEX_LIGHTING == 4,
                 "order of `constants`");
-  const VkSpecializationMapEntry entries[4] = {{PW_SPEC_TEXTURED, 0, sizeof(VkBool32)},
-                                               {PW_SPEC_LIT, sizeof(VkBool32), sizeof(VkBool32)},
-                                               {PW_SPEC_ENCODE_SRGB, 2 * sizeof(VkBool32), sizeof(VkBool32)},
-                                               {PW_SPEC_PHOTO_TEXTURE, 3 * sizeof(VkBool32), sizeof(VkBool32)}};
-  const VkSpecializationInfo specialization{4, entries, sizeof(constants), constants};
+  VkSpecializationMapEntry entries[5];
+  for (uint32_t i = 0; i < 5; ++i) entries[i] = {i, i * uint32_t(sizeof(VkBool32)), sizeof(VkBool32)};
+  // Both stages get every constant; each reads the ones it declares.
+  const VkSpecializationInfo specialization{5, entries, sizeof(constants), constants};
   const VkPipelineShaderStageCreateInfo stages[] = {
-      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertexShader_.get(), "main", nullptr},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertexShader_.get(), "main", &specialization},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT, fragmentShader_.get(), "main", &specialization},
   };
   const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};

@@ -19,8 +19,9 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 class PipelineLibrary {
  public:
-  // `anisotropic`: anisotropic filtering where the device has it.
-  static Result<std::unique_ptr<PipelineLibrary>> create(const Context& context, bool anisotropic);
+  // `anisotropic`: anisotropic filtering where the device has it. `vertexLighting`:
+  // VRML lighting per vertex rather than per pixel (PW_SPEC_VERTEX_LIGHTING).
+  static Result<std::unique_ptr<PipelineLibrary>> create(const Context& context, bool anisotropic, bool vertexLighting);
 
   VkDescriptorSetLayout frameSetLayout() const { return frameSetLayout_.get(); }
   VkDescriptorSetLayout sceneSetLayout() const { return sceneSetLayout_.get(); }
@@ -36,6 +37,7 @@ class PipelineLibrary {
     return samplers_[(s == TextureWrap::kClamp ? 1 : 0) + (t == TextureWrap::kClamp ? 2 : 0) + (anisotropic ? 4 : 0)].get();
   }
   bool anisotropic() const { return anisotropic_; }
+  bool vertexLighting() const { return vertexLighting_; }
 
   // The pipeline for drawing `variant` into a colour target of `format` with `samples`
   // and a kDepthFormat depth target, dynamic rendering.
@@ -51,6 +53,7 @@ class PipelineLibrary {
   OwnedShaderModule vertexShader_;
   OwnedShaderModule fragmentShader_;
   bool anisotropic_ = false;
+  bool vertexLighting_ = false;
   bool cpuDevice_ = false;
   std::array<OwnedSampler, 8> samplers_;  // by wrap s, wrap t, anisotropic (when enabled)
   std::map<std::tuple<VkFormat, VkSampleCountFlagBits, int>, OwnedPipeline> pipelines_;

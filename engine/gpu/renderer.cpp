@@ -141,7 +141,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& option
     return makeError(std::string(ctx.properties().deviceName) + " cannot render to 32-bit float depth; use PW_DEVICE=cpu");
   }
 
-  auto pipelines = gpu::PipelineLibrary::create(ctx, !keepFrameRate);
+  auto pipelines = gpu::PipelineLibrary::create(ctx, !keepFrameRate, keepFrameRate);
   if (!pipelines) return pipelines.error();
   impl->pipelines = std::move(*pipelines);
   auto pool = gpu::createFrameDescriptorPool(ctx, 1);
@@ -252,6 +252,7 @@ std::string Renderer::deviceName() const { return impl_->context->properties().d
 bool Renderer::isCpuDevice() const { return impl_->context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 int Renderer::msaaSamples() const { return static_cast<int>(impl_->samples); }
 bool Renderer::anisotropicFiltering() const { return impl_->pipelines->anisotropic(); }
+bool Renderer::perVertexLighting() const { return impl_->pipelines->vertexLighting(); }
 FrameStats Renderer::lastFrameStats() const { return impl_->stats; }
 std::vector<std::string> Renderer::notes() const { return impl_->context->notes(); }
 VkInstance Renderer::instance() const { return impl_->context->instance(); }

@@ -286,5 +286,88 @@ TEST_F(LightingTest, TextureIsUprightAndUnlitAtFullIntensity) {
   EXPECT_EQ(at(24, 24), glm::ivec3(255, 255, 255)) << "bottom right";
 }
 
+// The interactive profile on a CPU device lights per vertex (PW_SPEC_VERTEX_LIGHTING)
+// with the same equations: exact where the light does not vary over a face (a
+// directional light), and close on a finely divided surface under a point light.
+class VertexLightingTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    RendererOptions options;
+    options.forceCpu = true;
+    options.profile = RenderProfile::kInteractive;
+    options.validation = RendererOptions::Validation::kOn;
+    auto created = Renderer::create(options);
+    ASSERT_TRUE(created.ok()) << created.message();
+    interactive() = std::move(*created);
+  }
+  static void TearDownTestSuite() { interactive().reset(); }
+  static std::unique_ptr<Renderer>& interactive() {
+    static std::unique_ptr<Renderer> renderer;
+    return renderer;
+  }
+  static glm::ivec3 centre(const Scene& scene) {
+    EXPECT_TRUE(interactive()->setScene(scene).ok());
+    auto image = interactive()->renderToImage(frontCamera(), kSize, kSize);
+    EXPECT_TRUE(image.ok()) << image.message();
+    if (!image.ok()) return glm::ivec3(-1);
+    const uint8_t* p = image->pixel(kSize / 2, kSize / 2);
+    return {p[0], p[1], p[2]};
+  }
+  static void expectNear(const glm::ivec3& actual, const glm::vec3& expectedLinear, int tolerance) {
+    const glm::vec3 s = linearToSrgb(expectedLinear) * 255.0f + 0.5f;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], int(s[c]), tolerance) << "channel " << c;
+  }
+};
+
+// A (2n x 2n)-cell grid over [-half, half]^2 in z = 0 facing +Z: a vertex at the centre.
+std::shared_ptr<Mesh> gridMesh(int n, float half = 3.0f) {
+  auto mesh = std::make_shared<Mesh>();
+  const int side = 2 * n + 1;
+  for (int j = 0; j < side; ++j) {
+    for (int i = 0; i < side; ++i) {
+      mesh->positions.push_back({-half + 2 * half * i / (side - 1), -half + 2 * half * j / (side - 1), 0.0f});
+      mesh->normals.push_back({0, 0, 1});
+    }
+  }
+  for (int j = 0; j + 1 < side; ++j) {
+    for (int i = 0; i + 1 < side; ++i) {
+      const uint32_t a = j * side + i, b = a + 1, c = a + side + 1, d = a + side;
+      mesh->indices.insert(mesh->indices.end(), {a, b, c, a, c, d});
+    }
+  }
+  return mesh;
+}
+
+TEST_F(VertexLightingTest, InteractiveProfileOnLavapipeLightsPerVertexWithoutMsaaOrAnisotropy) {
+  EXPECT_TRUE(interactive()->perVertexLighting());
+  EXPECT_EQ(interactive()->msaaSamples(), 1);
+  EXPECT_FALSE(interactive()->anisotropicFiltering());
+}
+
+TEST_F(VertexLightingTest, DirectionalLightMatchesTheEquationsExactly) {
+  Light sun;
+  sun.type = LightType::kDirectional;
+  sun.direction = {0.0f, -0.6f, -0.8f};
+  sun.color = {1.0f, 0.9f, 0.8f};
+  sun.intensity = 0.7f;
+  sun.ambientIntensity = 0.3f;
+  const Material m = testMaterial();
+  expectNear(centre(quadScene(m, {sun})), test::vrmlLighting(centreSurface(m), linearised({sun})), 2);
+  EXPECT_EQ(interactive()->validationMessageCount(), 0u);
+}
+
+TEST_F(VertexLightingTest, PointLightAndSpecularOnAFineGridAreClose) {
+  Light lamp;
+  lamp.type = LightType::kPoint;
+  lamp.position = {0.5f, 0.5f, 2.0f};
+  lamp.attenuation = {1.0f, 0.3f, 0.1f};
+  lamp.ambientIntensity = 0.2f;
+  Material m = testMaterial();
+  m.specularColor = {0.6f, 0.6f, 0.6f};
+  m.shininess = 0.1f;
+  expectNear(centre(quadScene(m, {lamp}, gridMesh(16))), test::vrmlLighting(centreSurface(m), linearised({lamp})), 2);
+  EXPECT_EQ(interactive()->validationMessageCount(), 0u);
+}
+
 }  // namespace
 }  // namespace pw::engine
