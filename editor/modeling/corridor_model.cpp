@@ -136,6 +136,8 @@ SurfaceTexture cutTexture(const std::vector<cv::Mat>& pyramid, const Measurement
   // geometry, not the image, carries the scale) and no detail the photo has is lost.
   glm::dvec2 density = options.pxPerM > 0 ? glm::dvec2(options.pxPerM) : glm::max(photoScale, glm::dvec2(16.0));
   density = glm::min(density, glm::dvec2(options.maxTextureSide / widthM, options.maxTextureSide / heightM));
+  const double texels = density.x * widthM * density.y * heightM;
+  if (texels > options.maxTexturePixels) density *= std::sqrt(options.maxTexturePixels / texels);
   out.pxPerM = std::min(density.x, density.y);
   const int texW = std::max(2, static_cast<int>(std::lround(widthM * density.x)));
   const int texH = std::max(2, static_cast<int>(std::lround(heightM * density.y)));

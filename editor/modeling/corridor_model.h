@@ -22,6 +22,10 @@ struct ModelOptions {
   bool lit = false;          // false: photo-lit (no Material, headlight off); true: the seed paper's lighting
   double pxPerM = 0;         // texture resolution; 0: the photo's own best on each plane
   int maxTextureSide = 4096;
+  // Texels per texture at most (the photo's best density on a big photo's walls would
+  // give 4096 x 2000 and more, slow to cut and write for detail only the nearest metre
+  // of a wall has); the density is scaled down evenly beyond it.
+  double maxTexturePixels = 3.0e6;
 };
 
 // The part of one surface that has a texture, and the texture.
