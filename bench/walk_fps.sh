@@ -2,7 +2,8 @@
 # Walkthrough frame rate (issue 6), not a test: `photowalk walk --no-vsync` over a
 # scripted walk at 1280x720 on lavapipe under xvfb-run, for one corridor and for a
 # building of 20 corridors (made with a layout file from the shared corridor shots),
-# each against the same walk through an empty scene (clear + present only).
+# photo-lit (the default look) and --lit (47 point lights), and the built-in lit
+# sample room, each against the same walk through an empty scene (clear + present).
 # Usage: bench/walk_fps.sh [BUILD_DIR] [FRAMES]   (defaults: build, 300)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -35,6 +36,7 @@ PY
 
 "$pw" build assets/corridor.json -o "$out/one.wrl" --px-per-m 60 >/dev/null
 "$pw" build --layout "$out/building.json" -o "$out/building.wrl" --px-per-m 60 >/dev/null
+"$pw" build --layout "$out/building.json" -o "$out/building_lit.wrl" --px-per-m 60 --lit >/dev/null
 printf '#VRML V2.0 utf8\nViewpoint { position 0 1.6 0 }\n' > "$out/empty.wrl"
 {
   echo "0 key W down"
@@ -42,8 +44,10 @@ printf '#VRML V2.0 utf8\nViewpoint { position 0 1.6 0 }\n' > "$out/empty.wrl"
   echo "$frames quit"
 } > "$out/walk.replay"
 
-for model in empty one building; do
-  line=$(xvfb-run -a -s "-screen 0 1920x1080x24" "$pw" walk "$out/$model.wrl" --size 1280x720 --no-vsync \
+for model in empty one building building_lit sample; do
+  file="$out/$model.wrl"
+  [ "$model" = sample ] && file=sample
+  line=$(xvfb-run -a -s "-screen 0 1920x1080x24" "$pw" walk "$file" --size 1280x720 --no-vsync \
          --replay "$out/walk.replay" --no-overlay | grep '^walk:')
   echo "$model: $line"
 done

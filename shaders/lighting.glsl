@@ -10,7 +10,8 @@
 // table 4.5), and no fog. The sum is kept in two parts, what OD multiplies and what it
 // does not: I = OE + OD * diffuse + specular, so that lighting worked out per vertex
 // can take the texture's OD per pixel.
-// Needs `frame` (FrameBlock) and `lights` (LightBlock) declared before it.
+// Needs `frame` (FrameBlock), `lights` (LightBlock), `lightLists` (LightListBlock) and
+// `draw` (the push constants) declared before it.
 
 struct LightTerms {
   vec3 diffuse;   // SUM_i of on * attenuation * spot * IL * (Ia * Oa + I * (N . L))
@@ -58,22 +59,24 @@ float spotFactor(const LightGpu light, const vec3 L) {
 LightTerms lightTerms(const vec3 P, const vec3 N, const MaterialGpu m) {
   const vec3 V = normalize(frame.cameraPosition.xyz - P);
   LightTerms terms = LightTerms(vec3(0.0), vec3(0.0));
-  // Lights are sorted by kind; the counts come from a uniform, so every loop is a real
-  // loop on every device, and a kind the scene lacks costs nothing.
-  uint i = 0u;
-  for (uint end = frame.lightCounts.x; i < end; ++i) {
+  // Directional lights come first in the light buffer and reach everything; the point
+  // and spot lights within reach of this shape come as a list with its draw. Every
+  // count is uniform (a uniform or a push constant), so every loop is a real loop on
+  // every device, and a kind the shape lacks costs nothing.
+  for (uint i = 0u; i < frame.lightCounts.x; ++i) {
     const LightGpu light = lights[i];
     addLight(terms, 1.0, light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w,
              -light.directionAmbient.xyz, N, V, m);
   }
-  for (uint end = i + frame.lightCounts.y; i < end; ++i) {
-    const LightGpu light = lights[i];
+  uint k = draw.lightListOffset;
+  for (uint end = k + draw.pointLightCount; k < end; ++k) {
+    const LightGpu light = lights[lightLists[k]];
     vec3 L;
     const float attenuation = pointAttenuation(light, P, N, L);
     addLight(terms, attenuation, light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w, L, N, V, m);
   }
-  for (uint end = i + frame.lightCounts.z; i < end; ++i) {
-    const LightGpu light = lights[i];
+  for (uint end = k + draw.spotLightCount; k < end; ++k) {
+    const LightGpu light = lights[lightLists[k]];
     vec3 L;
     const float attenuation = pointAttenuation(light, P, N, L) * spotFactor(light, L);
     addLight(terms, attenuation, light.colorIntensity.rgb, light.colorIntensity.a, light.directionAmbient.w, L, N, V, m);

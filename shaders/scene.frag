@@ -13,6 +13,7 @@ layout(constant_id = PW_SPEC_VERTEX_LIGHTING) const bool kVertexLighting = false
 
 layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHTS) readonly buffer LightBlock { LightGpu lights[]; };
+layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHT_LISTS) readonly buffer LightListBlock { uint lightLists[]; };
 layout(set = PW_SET_TEXTURE, binding = PW_BINDING_TEXTURE) uniform sampler2D shapeTexture;
 layout(push_constant) uniform PushBlock { DrawPushConstants draw; };
 

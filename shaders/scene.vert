@@ -13,6 +13,7 @@ layout(location = PW_LOCATION_COLOR) in vec4 inColor;
 layout(std140, set = PW_SET_FRAME, binding = PW_BINDING_FRAME_UNIFORMS) uniform FrameBlock { FrameUniforms frame; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_SHAPES) readonly buffer ShapeBlock { ShapeGpu shapes[]; };
 layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHTS) readonly buffer LightBlock { LightGpu lights[]; };
+layout(std430, set = PW_SET_SCENE, binding = PW_BINDING_LIGHT_LISTS) readonly buffer LightListBlock { uint lightLists[]; };
 layout(push_constant) uniform PushBlock { DrawPushConstants draw; };
 
 layout(constant_id = PW_SPEC_LIT) const bool kLit = true;

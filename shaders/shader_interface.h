@@ -33,6 +33,7 @@ using uint = uint32_t;
 #define PW_SET_SCENE 1
 #define PW_BINDING_LIGHTS 0
 #define PW_BINDING_SHAPES 1
+#define PW_BINDING_LIGHT_LISTS 2
 #define PW_SET_TEXTURE 2
 #define PW_BINDING_TEXTURE 0
 
@@ -69,9 +70,9 @@ struct FrameUniforms {
   mat4 viewProjection;     // world to Vulkan clip
   vec4 cameraPosition;     // xyz world metres
   vec4 headlightDirection; // xyz: direction the light travels (the view direction)
-  uvec4 lightCounts;       // x: directional, y: point, z: spot lights, stored in that order in
-                           // the light buffer (one loop per kind, no per-light type branch);
-                           // w: 1 when the headlight is on
+  uvec4 lightCounts;       // x: directional lights, first in the light buffer (they reach
+                           // everything); y, z: 0 (the point and spot lights that reach a
+                           // shape come with its draw); w: 1 when the headlight is on
 };
 
 // Set 1, binding 0: the scene's lights in world space (VRML97 4.14.4, 6.17, 6.36, 6.45).
@@ -102,9 +103,12 @@ struct ShapeGpu {
 // lavapipe, and the per-pixel cost of fetching it from a storage buffer disappears.
 struct DrawPushConstants {
   uint shapeIndex;
-  uint padding0;
-  uint padding1;
-  uint padding2;
+  // The point and spot lights within reach of the shape (their radius meets its
+  // bounds): pointLightCount then spotLightCount indices into the light buffer, from
+  // lightListOffset in the light-list buffer (set 1, binding 2).
+  uint lightListOffset;
+  uint pointLightCount;
+  uint spotLightCount;
   MaterialGpu material;
   // A texture cut from a photo (Texture::sourceFromTexCoord): the homography from the
   // shader's (u, v), v = 0 at the top, to the photo's pixels, as three columns in xyz;

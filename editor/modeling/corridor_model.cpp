@@ -250,9 +250,9 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                                       : "photowalk: building of " + std::to_string(corridors.size()) + " corridors";
   scene.backgroundColor = glm::vec3(0.0f);
 
-  // Lit: 0.5 m cells, so that viewers and renderers that light per vertex (Gouraud,
+  // Lit: 1 m cells, so that viewers and renderers that light per vertex (Gouraud,
   // as VRML97 browsers did; photowalk walk on a CPU) show each lamp's pool of light.
-  const double cellM = options.lit ? 0.5 : 0.0;
+  const double cellM = options.lit ? 1.0 : 0.0;
   for (size_t c = 0; c < corridors.size(); ++c) {
     const CorridorModel& model = corridors[c];
     const glm::mat4 transform(plan.worldFromCorridor[c]);

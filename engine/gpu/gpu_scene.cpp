@@ -14,7 +14,7 @@ VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value
 
 // Where each piece lies in the one staging buffer.
 struct StagingLayout {
-  VkDeviceSize vertices = 0, indices = 0, lights = 0, shapes = 0;
+  VkDeviceSize vertices = 0, indices = 0, lights = 0, shapes = 0, lightLists = 0;
   std::vector<VkDeviceSize> textures;  // [0]: the white texel
   VkDeviceSize total = 0;
 };
@@ -96,10 +96,12 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   const VkDeviceSize indexBytes = packed.indices.size() * sizeof(uint32_t);
   const VkDeviceSize lightBytes = packed.lights.size() * sizeof(LightGpu);
   const VkDeviceSize shapeBytes = packed.shapes.size() * sizeof(ShapeGpu);
+  const VkDeviceSize lightListBytes = packed.lightLists.size() * sizeof(uint32_t);
   layout.vertices = place(vertexBytes);
   layout.indices = place(indexBytes);
   layout.lights = place(lightBytes);
   layout.shapes = place(shapeBytes);
+  layout.lightLists = place(lightListBytes);
   for (const Image* image : images) layout.textures.push_back(place(image ? image->rgba.size() : 4));
 
   auto staging = createBuffer(context, layout.total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kUpload);
@@ -112,6 +114,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   put(layout.indices, packed.indices.data(), indexBytes);
   put(layout.lights, packed.lights.data(), lightBytes);
   put(layout.shapes, packed.shapes.data(), shapeBytes);
+  put(layout.lightLists, packed.lightLists.data(), lightListBytes);
   for (size_t i = 0; i < images.size(); ++i) {
     static const uint8_t kWhite[4] = {255, 255, 255, 255};
     std::memcpy(bytes + layout.textures[i], images[i] ? images[i]->rgba.data() : kWhite, images[i] ? images[i]->rgba.size() : 4);
@@ -127,6 +130,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   PW_TRY(makeBuffer(out->indices, indexBytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT));
   PW_TRY(makeBuffer(out->lights, lightBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
   PW_TRY(makeBuffer(out->shapes, shapeBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  PW_TRY(makeBuffer(out->lightLists, lightListBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
   for (const Image* image : images) {
     ImageSpec spec;
     spec.format = kTextureFormat;
@@ -149,6 +153,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
     copy(out->indices, layout.indices, indexBytes);
     copy(out->lights, layout.lights, lightBytes);
     copy(out->shapes, layout.shapes, shapeBytes);
+    copy(out->lightLists, layout.lightLists, lightListBytes);
     for (size_t i = 0; i < out->textures.size(); ++i) {
       const GpuImage& image = out->textures[i];
       transitionImage(cmd, {image.get(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -176,7 +181,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
 
   // Descriptors: one scene set, one set per texture slot.
   const uint32_t textureSets = static_cast<uint32_t>(out->textures.size());
-  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3},
                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureSets}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1 + textureSets;
@@ -199,6 +204,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
 
   const VkDescriptorBufferInfo lightInfo{out->lights.get(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo shapeInfo{out->shapes.get(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo lightListInfo{out->lightLists.get(), 0, VK_WHOLE_SIZE};
   std::vector<VkDescriptorImageInfo> imageInfos(textureSets);
   std::vector<VkWriteDescriptorSet> writes;
   const auto bufferWrite = [&](uint32_t binding, const VkDescriptorBufferInfo* info) {
@@ -212,6 +218,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   };
   bufferWrite(PW_BINDING_LIGHTS, &lightInfo);
   bufferWrite(PW_BINDING_SHAPES, &shapeInfo);
+  bufferWrite(PW_BINDING_LIGHT_LISTS, &lightListInfo);
   for (uint32_t slot = 0; slot < textureSets; ++slot) {
     const Texture* texture = slot == 0 ? nullptr : packed.textures[slot - 1].texture;
     imageInfos[slot].sampler = texture ? pipelines.sampler(texture->wrapS, texture->wrapT, texture->sourceFromTexCoord.has_value())

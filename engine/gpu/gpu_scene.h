@@ -35,6 +35,7 @@ struct GpuScene {
   Buffer indices;
   Buffer lights;
   Buffer shapes;
+  Buffer lightLists;
   std::vector<GpuImage> textures;  // [0] is a 1x1 white texture for untextured shapes
   OwnedDescriptorPool descriptorPool;  // after the buffers it describes: freed first
   VkDescriptorSet sceneSet = VK_NULL_HANDLE;

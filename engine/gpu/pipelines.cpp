@@ -43,7 +43,8 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
     if (!frame) return frame.error();
     lib->frameSetLayout_ = std::move(*frame);
     auto scene = makeSetLayout(device, {{PW_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kGraphicsStages, nullptr},
-                                        {PW_BINDING_SHAPES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
+                                        {PW_BINDING_SHAPES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+                                        {PW_BINDING_LIGHT_LISTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kGraphicsStages, nullptr}});
     if (!scene) return scene.error();
     lib->sceneSetLayout_ = std::move(*scene);
     auto texture = makeSetLayout(device, {{PW_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});

@@ -223,6 +223,20 @@ Result<PackedScene> packScene(const Scene& scene) {
     draw.cullBackFaces = surface && mesh.solid;
     draw.clockwiseFront = glm::determinant(glm::mat3(shape.transform)) < 0.0f;
     draw.worldBounds = worldBounds(shape);
+    if (draw.variant.lit) {
+      // Point and spot lights light nothing beyond their radius (VRML97 6.36, 6.45):
+      // a shape gets those whose radius meets its bounds, not all of a building's.
+      draw.lightListOffset = static_cast<uint32_t>(out.lightLists.size());
+      const uint32_t firstPoint = out.lightCounts.x, firstSpot = firstPoint + out.lightCounts.y;
+      for (uint32_t i = firstPoint; i < firstSpot + out.lightCounts.z; ++i) {
+        const LightGpu& light = out.lights[i];
+        const glm::vec3 p(light.positionType);
+        const glm::vec3 nearest = glm::clamp(p, draw.worldBounds.min, draw.worldBounds.max);
+        if (glm::length(p - nearest) > light.attenuationRadius.w) continue;
+        out.lightLists.push_back(i);
+        ++(i < firstSpot ? draw.pointLightCount : draw.spotLightCount);
+      }
+    }
     out.shapes.push_back(gpuShape);
     (draw.variant.blended ? out.transparent : out.opaque).push_back(draw);
   }

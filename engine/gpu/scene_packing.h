@@ -46,6 +46,9 @@ struct DrawItem {
   int32_t vertexOffset = 0;
   uint32_t textureSlot = 0;  // 0: none (a 1x1 white texture), else PackedScene::textures[slot - 1]
   std::array<glm::vec4, 3> textureSource{};  // pushed with the draw (DrawPushConstants::textureSource)
+  uint32_t lightListOffset = 0;  // DrawPushConstants: the lights that reach the shape
+  uint32_t pointLightCount = 0;
+  uint32_t spotLightCount = 0;
   PipelineVariant variant;
   bool cullBackFaces = true;      // solid TRUE
   bool clockwiseFront = false;    // a mirroring transform (negative determinant) flips the winding
@@ -63,6 +66,7 @@ struct PackedScene {
   std::vector<ShapeGpu> shapes;
   std::vector<LightGpu> lights;                // the lights that are on: directional, point, spot
   glm::uvec3 lightCounts{0};                   // how many of each kind, in that order
+  std::vector<uint32_t> lightLists;            // per lit draw: indices of its point, then spot lights
   std::vector<PackedTexture> textures;         // distinct Texture objects, in slot order
   std::vector<DrawItem> opaque;                // sorted by pipeline, texture, cull state
   std::vector<DrawItem> transparent;           // sorted per frame, back to front

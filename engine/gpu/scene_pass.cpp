@@ -40,7 +40,9 @@ class DrawState {
       vkCmdSetFrontFace(cmd_, d.clockwiseFront ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
       front_ = front;
     }
-    const DrawPushConstants push{d.shapeIndex, 0, 0, 0, d.material, {d.textureSource[0], d.textureSource[1], d.textureSource[2]}};
+    const DrawPushConstants push{d.shapeIndex,        d.lightListOffset,
+                                 d.pointLightCount,   d.spotLightCount,
+                                 d.material,          {d.textureSource[0], d.textureSource[1], d.textureSource[2]}};
     vkCmdPushConstants(cmd_, pipelines_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(push), &push);
     vkCmdDrawIndexed(cmd_, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
@@ -71,7 +73,7 @@ Status recordScenePass(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
   uniforms.cameraPosition = glm::vec4(camera.position, 1.0f);
   const bool headlight = settings.headlight.value_or(scene.headlight);
   uniforms.headlightDirection = glm::vec4(forwardOf(camera), 0.0f);
-  uniforms.lightCounts = glm::uvec4(scene.lightCounts, headlight ? 1u : 0u);
+  uniforms.lightCounts = glm::uvec4(scene.lightCounts.x, 0u, 0u, headlight ? 1u : 0u);
   std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));  // host-coherent; the submit makes it visible
 
   // Previous contents are discarded (UNDEFINED); the source stages order the layout

@@ -77,6 +77,47 @@ TEST(PackScene, PhotoTexturesGetTheFootprintPipelineAndTheirHomography) {
   EXPECT_EQ(b.textureSource[0], glm::vec4(0.0f));
 }
 
+// A point or spot light reaches only the shapes its radius meets (VRML97 6.36):
+// each lit draw carries its own list; directional lights reach everything.
+TEST(PackScene, LitDrawsListTheLightsWithinReach) {
+  Scene scene;
+  scene.shapes.push_back(shapeOf(triangle()));
+  Shape far = shapeOf(triangle());
+  far.transform = glm::translate(glm::mat4(1.0f), glm::vec3(50, 0, 0));
+  scene.shapes.push_back(far);
+  scene.shapes.push_back(shapeOf(triangle(), std::nullopt));  // unlit: no lights at all
+  Light sun;
+  sun.type = LightType::kDirectional;
+  Light lamp;
+  lamp.type = LightType::kPoint;
+  lamp.position = {0, 0, 3};
+  lamp.radius = 5;
+  Light spot;
+  spot.type = LightType::kSpot;
+  spot.position = {52, 0, 0};
+  spot.radius = 4;
+  scene.lights = {spot, lamp, sun};
+  auto packed = packScene(scene);
+  ASSERT_TRUE(packed.ok()) << packed.message();
+  ASSERT_EQ(packed->lights.size(), 3u);
+  EXPECT_EQ(packed->lightCounts, glm::uvec3(1, 1, 1)) << "sorted: directional, point, spot";
+  for (const DrawItem& d : packed->opaque) {
+    const std::vector<uint32_t> list(packed->lightLists.begin() + d.lightListOffset,
+                                     packed->lightLists.begin() + d.lightListOffset + d.pointLightCount + d.spotLightCount);
+    if (d.shapeIndex == 0) {
+      EXPECT_EQ(d.pointLightCount, 1u);
+      EXPECT_EQ(d.spotLightCount, 0u);
+      EXPECT_EQ(list, std::vector<uint32_t>{1u});
+    } else if (d.shapeIndex == 1) {
+      EXPECT_EQ(d.pointLightCount, 0u);
+      EXPECT_EQ(d.spotLightCount, 1u);
+      EXPECT_EQ(list, std::vector<uint32_t>{2u});
+    } else {
+      EXPECT_EQ(d.pointLightCount + d.spotLightCount, 0u);
+    }
+  }
+}
+
 TEST(NormalMatrix, IsTheInverseTransposeUpToScale) {
   const glm::mat4 model = glm::rotate(glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, 0.5f, 1.0f)), 0.7f, glm::vec3(1, 2, 3));
   const glm::mat3 expected = glm::transpose(glm::inverse(glm::mat3(model)));
