@@ -22,21 +22,19 @@ layout(location = 1) in vec3 inWorldNormal;
 layout(location = 2) in vec2 inTexCoord;
 layout(location = 3) in vec4 inColor;
 layout(location = 4) in vec3 inPhoto;
-layout(location = 5) in vec3 inDiffuseLight;   // kVertexLighting: LightTerms for the front face,
+layout(location = 5) in vec3 inDiffuseLight;  // kVertexLighting: LightTerms for the side seen
 layout(location = 6) in vec3 inSpecularLight;
-layout(location = 7) in vec3 inBackDiffuseLight;  // and for the back (two-sided materials)
-layout(location = 8) in vec3 inBackSpecularLight;
 
 layout(location = 0) out vec4 outColor;
 
 #include "lighting.glsl"
 
 vec3 litColor(const vec3 OD, const MaterialGpu m) {
-  const bool back = (m.flags.x & kMaterialTwoSided) != 0u && !gl_FrontFacing;
   LightTerms terms;
   if (kVertexLighting) {
-    terms = back ? LightTerms(inBackDiffuseLight, inBackSpecularLight) : LightTerms(inDiffuseLight, inSpecularLight);
+    terms = LightTerms(inDiffuseLight, inSpecularLight);
   } else {
+    const bool back = (m.flags.x & kMaterialTwoSided) != 0u && !gl_FrontFacing;
     const vec3 N = normalize(inWorldNormal);
     terms = lightTerms(inWorldPosition, back ? -N : N, m);
   }

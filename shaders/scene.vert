@@ -26,10 +26,8 @@ layout(location = 1) out vec3 outWorldNormal;
 layout(location = 2) out vec2 outTexCoord;
 layout(location = 3) out vec4 outColor;
 layout(location = 4) out vec3 outPhoto;  // homogeneous photo pixel (textures cut from a photo)
-layout(location = 5) out vec3 outDiffuseLight;  // kVertexLighting: LightTerms, front and back
+layout(location = 5) out vec3 outDiffuseLight;  // kVertexLighting: LightTerms
 layout(location = 6) out vec3 outSpecularLight;
-layout(location = 7) out vec3 outBackDiffuseLight;
-layout(location = 8) out vec3 outBackSpecularLight;
 
 void main() {
   const vec4 world = shapes[draw.shapeIndex].model * vec4(inPosition, 1.0);
@@ -43,20 +41,16 @@ void main() {
   outColor = inColor;
   gl_Position = frame.viewProjection * world;
   if (kLit && kVertexLighting) {
-    const vec3 N = normalize(outWorldNormal);
-    const LightTerms front = lightTerms(world.xyz, N, draw.material);
-    outDiffuseLight = front.diffuse;
-    outSpecularLight = front.specular;
-    if ((draw.material.flags.x & kMaterialTwoSided) != 0u) {
-      const LightTerms back = lightTerms(world.xyz, -N, draw.material);
-      outBackDiffuseLight = back.diffuse;
-      outBackSpecularLight = back.specular;
-    } else {
-      outBackDiffuseLight = front.diffuse;
-      outBackSpecularLight = front.specular;
-    }
+    vec3 N = normalize(outWorldNormal);
+    // A two-sided surface is lit on the side that faces the eye (the fragment shader
+    // tells by gl_FrontFacing; per vertex the normal against the view does).
+    const bool twoSided = (draw.material.flags.x & kMaterialTwoSided) != 0u;
+    if (twoSided && dot(N, frame.cameraPosition.xyz - world.xyz) < 0.0) N = -N;
+    const LightTerms terms = lightTerms(world.xyz, N, draw.material);
+    outDiffuseLight = terms.diffuse;
+    outSpecularLight = terms.specular;
   } else {
-    outDiffuseLight = outSpecularLight = outBackDiffuseLight = outBackSpecularLight = vec3(0.0);
+    outDiffuseLight = outSpecularLight = vec3(0.0);
   }
   // Points need a size (Vulkan 27.10: undefined otherwise); ignored for other topologies.
   gl_PointSize = 1.0;

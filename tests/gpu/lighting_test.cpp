@@ -369,5 +369,19 @@ TEST_F(VertexLightingTest, PointLightAndSpecularOnAFineGridAreClose) {
   EXPECT_EQ(interactive()->validationMessageCount(), 0u);
 }
 
+TEST_F(VertexLightingTest, TwoSidedSurfaceSeenFromBehindIsLitOnThatSide) {
+  auto back = quadMesh();
+  for (glm::vec3& n : back->normals) n = -n;  // facing away from the camera
+  std::swap(back->indices[1], back->indices[2]);
+  std::swap(back->indices[4], back->indices[5]);
+  back->solid = false;
+  Light sun;
+  sun.type = LightType::kDirectional;
+  sun.direction = {0.0f, -0.6f, -0.8f};
+  const Material m = testMaterial();
+  expectNear(centre(quadScene(m, {sun}, back)), test::vrmlLighting(centreSurface(m), linearised({sun})), 2);
+  EXPECT_EQ(interactive()->validationMessageCount(), 0u);
+}
+
 }  // namespace
 }  // namespace pw::engine
