@@ -78,17 +78,22 @@ LightGpu packLight(const Light& light) {
 
 }  // namespace
 
-std::array<glm::vec4, 3> textureSourceColumns(const Texture& texture) {
-  if (!texture.sourceFromTexCoord) return {};
+std::optional<std::array<glm::vec4, 3>> textureSourceColumns(const Texture& texture) {
+  if (!texture.sourceFromTexCoord) return std::nullopt;
   const glm::mat3 h = withFlippedT(*texture.sourceFromTexCoord);
   for (int c = 0; c < 3; ++c) {
     for (int r = 0; r < 3; ++r) {
-      if (!std::isfinite(h[c][r])) return {};
+      if (!std::isfinite(h[c][r])) return std::nullopt;
     }
+  }
+  // The whole texture must lie in front of the photo's camera (w > 0; w is affine in
+  // (u, v), so its corners decide): a file's nonsense must not reach the shader.
+  for (const glm::vec2 corner : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1)}) {
+    if (!((h * glm::vec3(corner, 1.0f)).z > 0.0f)) return std::nullopt;
   }
   const float width = texture.image ? static_cast<float>(texture.image->width) : 1.0f;
   const float height = texture.image ? static_cast<float>(texture.image->height) : 1.0f;
-  return {glm::vec4(h[0], 0.0f), glm::vec4(h[1], width), glm::vec4(h[2], height)};
+  return std::array<glm::vec4, 3>{glm::vec4(h[0], 0.0f), glm::vec4(h[1], width), glm::vec4(h[2], height)};
 }
 
 glm::mat3 normalMatrix(const glm::mat4& model) {
@@ -211,10 +216,11 @@ Result<PackedScene> packScene(const Scene& scene) {
     draw.indexCount = static_cast<uint32_t>(mesh.indices.size());
     draw.vertexOffset = packed->second.vertexOffset;
     draw.textureSlot = textureSlot;
-    if (texture) draw.textureSource = textureSourceColumns(*texture);
+    const auto source = texture ? textureSourceColumns(*texture) : std::nullopt;
+    if (source) draw.textureSource = *source;
     draw.variant.topology = mesh.topology;
     draw.variant.textured = textureSlot != 0;
-    draw.variant.photoTexture = texture && texture->sourceFromTexCoord && mesh.topology == Topology::kTriangles;
+    draw.variant.photoTexture = source.has_value() && mesh.topology == Topology::kTriangles;
     draw.variant.lit = (flags & kMaterialUnlit) == 0;
     // The texture's alpha replaces the material's transparency (VRML97 4.14.3, table 4.5).
     const bool alphaFromTexture = textureAlpha;

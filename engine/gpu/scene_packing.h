@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <vector>
 
@@ -79,8 +80,10 @@ struct PackedScene {
 Result<PackedScene> packScene(const Scene& scene);
 
 // DrawPushConstants::textureSource for a texture: its Texture::sourceFromTexCoord
-// taken to the shader's texture coordinates (v = 1 - t), or all zero without one.
-std::array<glm::vec4, 3> textureSourceColumns(const Texture& texture);
+// taken to the shader's texture coordinates (v = 1 - t), with the texture's size; none
+// without one, or with one that is not finite or puts part of the texture behind the
+// photo's camera (the texture is then drawn as any other).
+std::optional<std::array<glm::vec4, 3>> textureSourceColumns(const Texture& texture);
 
 // The inverse transpose of the upper 3x3, computed as the cofactor matrix so that
 // singular transforms (a zero scale) still give finite normals; the shader normalises.

@@ -75,6 +75,13 @@ TEST(PackScene, PhotoTexturesGetTheFootprintPipelineAndTheirHomography) {
   EXPECT_EQ(a.textureSource[1].w, 4.0f);
   EXPECT_EQ(a.textureSource[2].w, 2.0f);
   EXPECT_EQ(b.textureSource[0], glm::vec4(0.0f));
+
+  // A homography that puts part of the texture behind the camera (w < 0 at a corner),
+  // as a damaged file might: drawn as an ordinary texture.
+  photo->sourceFromTexCoord = glm::mat3(glm::vec3(100, 0, 1), glm::vec3(0, 50, 0), glm::vec3(10, 20, -0.5f));
+  auto damaged = packScene(scene);
+  ASSERT_TRUE(damaged.ok()) << damaged.message();
+  for (const DrawItem& d : damaged->opaque) EXPECT_FALSE(d.variant.photoTexture);
 }
 
 // A point or spot light reaches only the shapes its radius meets (VRML97 6.36):
