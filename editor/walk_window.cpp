@@ -420,6 +420,10 @@ void WalkApp::drawOverlay() {
     for (double ms : recentFrameMs_) meanMs += ms;
     if (!recentFrameMs_.empty()) meanMs /= recentFrameMs_.size();
     ImGui::Text("%.0f fps  %.2f ms/frame  %s", meanMs > 0 ? 1000.0 / meanMs : 0.0, meanMs, renderer_->deviceName().c_str());
+    // What the frame rate costs in looks (the interactive profile on a CPU device).
+    ImGui::Text("%dx MSAA, %s filtering, lit per %s", renderer_->msaaSamples(),
+                renderer_->anisotropicFiltering() ? "anisotropic" : "trilinear",
+                renderer_->perVertexLighting() ? "vertex" : "pixel");
     const engine::Camera c = currentCamera();
     const glm::dvec2 yp = yawPitchOf(c.orientation);
     ImGui::Text("position %.2f %.2f %.2f m  heading %.0f deg", c.position.x, c.position.y, c.position.z, glm::degrees(yp.x));
