@@ -80,7 +80,9 @@ void main() {
     // _SRGB format: already linear. A specialization constant, not a push constant:
     // lavapipe ran both sides of a run-time branch around texture(), 40% of a frame.
     const vec4 texel = kPhotoTexture ? samplePhotoTexture(inTexCoord) : texture(shapeTexture, inTexCoord);
-    OD = texel.rgb;
+    // VRML97 table 4.5: an RGB(A) texture replaces the diffuse colour, a grey one
+    // (intensity) modulates it.
+    OD = (flags & kMaterialIntensityTexture) != 0u ? OD * texel.r : texel.rgb;
     if ((flags & kMaterialTextureAlpha) != 0u) alpha = texel.a;
   }
   vec3 color = kLit ? litColor(OD, m) : OD;

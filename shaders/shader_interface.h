@@ -64,6 +64,7 @@ PW_SHADER_CONST uint kMaterialTextured = 2u;       // has a texture (the pipelin
 PW_SHADER_CONST uint kMaterialTextureAlpha = 4u;   // the texture's alpha replaces 1 - transparency
 PW_SHADER_CONST uint kMaterialVertexColor = 8u;    // per-vertex colour replaces the diffuse colour
 PW_SHADER_CONST uint kMaterialTwoSided = 16u;      // solid FALSE: light the back face with -N
+PW_SHADER_CONST uint kMaterialIntensityTexture = 32u;  // a 1- or 2-component texture modulates the colour
 
 // Set 0: one per frame in flight.
 struct FrameUniforms {

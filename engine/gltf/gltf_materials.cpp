@@ -86,9 +86,11 @@ int DocumentBuilder::materialFor(const Appearance* appearance, const Mesh& mesh,
   const bool lit = vrml && mesh.topology == Topology::kTriangles;
   const float opacity = vrml ? 1.0f - unitInterval(vrml->transparency) : 1.0f;
 
-  // Texture and vertex colours replace the diffuse colour (VRML97 6.5, table 6.5).
+  // Colour textures and vertex colours replace the diffuse colour (VRML97 4.14.3, table
+  // 4.5); a grey (intensity) texture modulates it, as glTF's texture does its factor.
+  const bool intensity = textured && appearance->texture->image->grey;
   glm::vec3 base(1.0f);
-  if (vrml && !textured && !vertexColors) base = linearFromSrgb(lit ? vrml->diffuseColor : vrml->emissiveColor);
+  if (vrml && (!textured || intensity) && !vertexColors) base = linearFromSrgb(lit ? vrml->diffuseColor : vrml->emissiveColor);
 
   Json pbr = {{"baseColorFactor", vec4Json(glm::vec4(base, opacity))}, {"metallicFactor", 0.0}};
   if (textured) pbr["baseColorTexture"] = Json{{"index", textureFor(*appearance->texture)}};

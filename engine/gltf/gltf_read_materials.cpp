@@ -151,7 +151,9 @@ Result<SceneBuilder::Look> SceneBuilder::lookFor(const Json* materialIndex, cons
     vrml.emissiveColor = srgbFromLinear(vec3Of(*emissive));
     vrml.transparency = 1.0f - opacity;
     vrml.ambientIntensity = 0.0f;  // glTF has no ambient term
-    if (appearance->texture) vrml.diffuseColor = glm::vec3(1.0f);  // VRML: the texture replaces it
+    // VRML: a colour texture replaces the diffuse colour; a grey one multiplies it, as
+    // glTF's texture multiplies the factor.
+    if (appearance->texture && !appearance->texture->image->grey) vrml.diffuseColor = glm::vec3(1.0f);
     appearance->material = vrml;
   }
   if (ext && member(*ext, "KHR_texture_transform")) source_.warn(at + ": ignores KHR_texture_transform");

@@ -198,7 +198,8 @@ Result<PackedScene> packScene(const Scene& scene) {
       if (inserted) out.textures.push_back({texture, anyTransparentTexel(image)});
       textureSlot = slot->second;
       textureAlpha = out.textures[textureSlot - 1].hasAlpha;
-      flags |= kMaterialTextured | (textureAlpha ? kMaterialTextureAlpha : 0u);
+      flags |= kMaterialTextured | (textureAlpha ? kMaterialTextureAlpha : 0u) |
+               (image.grey ? kMaterialIntensityTexture : 0u);
     }
     if (!mesh.colors.empty()) flags |= kMaterialVertexColor;
     if (surface && !mesh.solid) flags |= kMaterialTwoSided;

@@ -41,6 +41,7 @@ Result<Image> decodeImage(const uint8_t* bytes, size_t size, const std::string& 
   image.width = w;
   image.height = h;
   image.rgba.assign(data, data + static_cast<size_t>(w) * h * 4);
+  image.grey = channels <= 2;
   stbi_image_free(data);
   return image;
 }

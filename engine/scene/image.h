@@ -14,6 +14,11 @@ struct Image {
   int width = 0;
   int height = 0;
   std::vector<uint8_t> rgba;  // width * height * 4 bytes
+  // A grey image (1 or 2 components in its source: grey, grey + alpha; r = g = b). As a
+  // texture it is an intensity map: it modulates the material's diffuse colour instead
+  // of replacing it (VRML97 4.14.3, table 4.5). PNG files keep it grey (JPEG does not:
+  // stb writes JPEGs in colour).
+  bool grey = false;
 
   bool empty() const { return width <= 0 || height <= 0; }
   uint8_t* pixel(int x, int y) { return rgba.data() + (static_cast<size_t>(y) * width + x) * 4; }

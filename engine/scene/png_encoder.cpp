@@ -52,7 +52,9 @@ Result<std::vector<uint8_t>> encodePng(const Image& image) {
   if (image.empty()) return makeError("cannot encode an empty image as PNG");
   const size_t width = static_cast<size_t>(image.width), height = static_cast<size_t>(image.height);
   if (image.rgba.size() != width * height * 4) return makeError("image pixel data does not match its size");
-  const size_t channels = opaque(image) ? 3 : 4;
+  // Grey images (intensity textures) stay grey: PNG colour types 0 and 4 (grey, grey +
+  // alpha) from the red channel; colour ones are 2 (RGB) or 6 (RGBA).
+  const size_t channels = (image.grey ? 1 : 3) + (opaque(image) ? 0 : 1);
   const size_t rowBytes = width * channels;
 
   // Each row: filter type byte 4 (Paeth: minus whichever of the left, upper and
@@ -68,8 +70,13 @@ Result<std::vector<uint8_t>> encodePng(const Image& image) {
     const uint8_t* source = image.rgba.data() + y * width * 4;
     if (channels == 4) {
       std::memcpy(current.data(), source, rowBytes);
-    } else {
+    } else if (channels == 3) {
       for (size_t x = 0; x < width; ++x) std::memcpy(&current[3 * x], &source[4 * x], 3);
+    } else {
+      for (size_t x = 0; x < width; ++x) {
+        current[channels * x] = source[4 * x];
+        if (channels == 2) current[2 * x + 1] = source[4 * x + 3];
+      }
     }
     uint8_t* out = &filtered[y * (rowBytes + 1)];
     out[0] = 4;
@@ -110,9 +117,10 @@ Result<std::vector<uint8_t>> encodePng(const Image& image) {
   std::vector<uint8_t> header;
   appendUint32(header, static_cast<uint32_t>(width));
   appendUint32(header, static_cast<uint32_t>(height));
-  // 8 bits per channel; colour type 2 (RGB) or 6 (RGBA); deflate; adaptive filtering
-  // method 0; no interlace (PNG spec, 11.2.2).
-  header.insert(header.end(), {8, static_cast<uint8_t>(channels == 3 ? 2 : 6), 0, 0, 0});
+  // 8 bits per channel; colour type 0 (grey), 4 (grey + alpha), 2 (RGB) or 6 (RGBA);
+  // deflate; adaptive filtering method 0; no interlace (PNG spec, 11.2.2).
+  static constexpr uint8_t kColourType[5] = {0, 0, 4, 2, 6};
+  header.insert(header.end(), {8, kColourType[channels], 0, 0, 0});
   appendChunk(png, "IHDR", header.data(), header.size());
   appendChunk(png, "IDAT", compressed.data(), compressedSize);
   appendChunk(png, "IEND", nullptr, 0);

@@ -42,6 +42,7 @@ std::shared_ptr<const Image> imageFromPixels(const std::vector<int32_t>& ints) {
   if (w <= 0 || h <= 0 || components < 1 || components > 4) return nullptr;
   if (ints.size() < 3 + static_cast<size_t>(w) * h) return nullptr;
   auto image = std::make_shared<Image>(makeImage(w, h));
+  image->grey = components <= 2;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const uint32_t p = static_cast<uint32_t>(ints[3 + static_cast<size_t>(y) * w + x]);

@@ -495,8 +495,11 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     std::string stem = textureStem(t.url);
     if (stem.rfind(outStem + "_", 0) == 0 && stem.size() > outStem.size() + 1) stem = stem.substr(outStem.size() + 1);
     const std::string base = outStem + "_" + stem;
-    std::string file = base + extension;
-    for (int k = 2; taken.count(file); ++k) file = base + "_" + std::to_string(k) + extension;
+    // Grey (intensity) textures stay PNG: a JPEG would come back in colour, replacing
+    // the material's colour instead of modulating it.
+    const char* ext = t.image->grey ? ".png" : extension;
+    std::string file = base + ext;
+    for (int k = 2; taken.count(file); ++k) file = base + "_" + std::to_string(k) + ext;
     taken.insert(file);
     urls.emplace(t.image.get(), file);
   }

@@ -255,6 +255,31 @@ TEST_F(LightingTest, SolidTrueCullsTheBackFace) {
   expectNear(renderCentre(scene), glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
+// VRML97 table 4.5: a grey (1-component) texture modulates the diffuse colour of a lit
+// shape, and is the colour itself (grey) of an unlit one.
+TEST_F(LightingTest, GreyTextureModulatesTheDiffuseColour) {
+  auto image = std::make_shared<Image>(makeImage(2, 2, 0x808080ff));
+  image->grey = true;
+  auto texture = std::make_shared<Texture>();
+  texture->image = image;
+  Light sun;
+  sun.type = LightType::kDirectional;
+  sun.direction = {0.0f, -0.6f, -0.8f};
+  sun.intensity = 0.9f;
+  sun.ambientIntensity = 0.2f;
+  Material m = testMaterial();
+  Scene scene = quadScene(m, {sun});
+  auto appearance = std::make_shared<Appearance>(*scene.shapes[0].appearance);
+  appearance->texture = texture;
+  scene.shapes[0].appearance = appearance;
+  test::ReferenceSurface surface = centreSurface(m);
+  surface.diffuse *= srgbToLinear(128.0f / 255.0f);
+  expectNear(renderCentre(scene), test::vrmlLighting(surface, linearised({sun})));
+
+  appearance->material.reset();  // unlit: the texture's grey
+  expectNear(renderCentre(scene), glm::vec3(srgbToLinear(128.0f / 255.0f)));
+}
+
 // The texture's top row must appear at the top: VRML's t = 0 is the image's bottom.
 TEST_F(LightingTest, TextureIsUprightAndUnlitAtFullIntensity) {
   // 4x4 texels in 2x2 blocks: top red | green, bottom blue | white.

@@ -25,6 +25,26 @@ TEST(Image, PngRoundTripIsExact) {
   EXPECT_EQ(*back, img);
 }
 
+// Grey images (intensity textures) stay grey through PNG files.
+TEST(Image, GreyImagesStayGreyInFiles) {
+  Image grey = makeImage(4, 2, 0x808080ff);
+  grey.grey = true;
+  grey.pixel(1, 1)[0] = grey.pixel(1, 1)[1] = grey.pixel(1, 1)[2] = 17;
+  Image greyAlpha = grey;
+  greyAlpha.pixel(3, 0)[3] = 40;
+  for (const Image& image : {grey, greyAlpha}) {
+    const fs::path path = tempDir() / "grey.png";
+    ASSERT_TRUE(saveImage(path, image).ok());
+    auto back = loadImage(path);
+    ASSERT_TRUE(back.ok()) << back.message();
+    EXPECT_EQ(*back, image);
+    std::ifstream file(path, std::ios::binary);
+    char header[26];
+    file.read(header, sizeof header);
+    EXPECT_EQ(header[25], image.pixel(3, 0)[3] == 255 ? 0 : 4) << "PNG colour type: grey, or grey + alpha";
+  }
+}
+
 TEST(Image, MissingFileNamesTheFile) {
   auto r = loadImage("/nonexistent/brick.png");
   ASSERT_FALSE(r.ok());

@@ -95,6 +95,16 @@ TEST(VrmlReader, PixelTextureRowsStartAtTheBottom) {
   EXPECT_EQ(image.pixel(0, 1)[0], 255);
 }
 
+TEST(VrmlReader, OneAndTwoComponentPixelTexturesAreGrey) {
+  const Scene s = read("Shape { appearance Appearance { texture PixelTexture { image 1 1 1 0x80 } } geometry Box { } }\n"
+                       "Shape { appearance Appearance { texture PixelTexture { image 1 1 2 0x80FF } } geometry Box { } }\n"
+                       "Shape { appearance Appearance { texture PixelTexture { image 1 1 3 0x808080 } } geometry Box { } }");
+  ASSERT_EQ(s.shapes.size(), 3u);
+  EXPECT_TRUE(s.shapes[0].appearance->texture->image->grey);
+  EXPECT_TRUE(s.shapes[1].appearance->texture->image->grey);
+  EXPECT_FALSE(s.shapes[2].appearance->texture->image->grey);
+}
+
 TEST(VrmlReader, ViewpointsNavigationLightsBackgroundWorldInfo) {
   const Scene s = read(R"(
     WorldInfo { title "Hall" info [ "one", "two" ] }

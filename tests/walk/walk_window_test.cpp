@@ -109,7 +109,9 @@ TEST_F(Walk, FarWallStopsTheWalkerAtTheAvatarRadiusEvenAtTenTimesTheSpeed) {
     for (const TraceRow& r : rows) nearest = std::min(nearest, r.z);
     // The far wall is at z = -19; the avatar radius is 0.25 m.
     EXPECT_GE(nearest, -19.0 + 0.25 - 1e-3) << "speed scale " << scale;
-    if (std::string(scale) == "10") EXPECT_NEAR(rows.back().z, -19.0 + 0.25, 0.01);
+    if (std::string(scale) == "10") {
+      EXPECT_NEAR(rows.back().z, -19.0 + 0.25, 0.01);
+    }
   }
 }
 
