@@ -152,7 +152,7 @@ Result<std::optional<Mesh>> buildGeometry(const Node& node, const NodeResolver& 
   if (type == "Extrusion") return buildExtrusion(node, options, diagnostics);
   if (diagnostics) {
     if (type == "Text") {
-      diagnostics->warn(node.where() + ": " + type + " geometry is not supported yet; the shape is skipped");
+      diagnostics->warn(node.where() + ": Text is drawn by the scene builder (vrml_text.h), not as a mesh");
     } else {
       diagnostics->warn(node.where() + ": a " + type + " is not a geometry node; the shape is skipped");
     }

@@ -7,6 +7,7 @@
 #include "engine/vrml/vrml_appearance.h"
 #include "engine/vrml/vrml_fields.h"
 #include "engine/vrml/vrml_geometry.h"
+#include "engine/vrml/vrml_text.h"
 #include "engine/vrml/vrml_proto.h"
 #include "engine/vrml/vrml_transform.h"
 
@@ -120,6 +121,7 @@ class Builder {
   const Proto* resolveExternProto(const Proto& proto);
   Status visit(const Visit& item);
   Status addShape(const Node& node, const Visit& item);
+  Status addText(const Node& shapeNode, const Node& text, const ShapeLook& look, const Visit& item);
   void addLight(const Node& node, const glm::dmat4& m);
   void addViewpoint(const Node& node, const glm::dmat4& m);
   void addInline(const Node& node, const Visit& item);
@@ -316,6 +318,7 @@ Status Builder::addShape(const Node& node, const Visit& item) {
   auto geometry = resolveNode(getNode(node, "geometry"));
   if (!geometry) return geometry.error();
   if (!*geometry || emptyGeometry_.count(geometry->get())) return {};
+  if ((*geometry)->typeName() == "Text") return addText(node, **geometry, *look, item);
   const bool textured = look->appearance && look->appearance->texture;
   const MeshKey key{geometry->get(), textured ? look->textureTransform : nullptr, textured};
   std::shared_ptr<const Mesh> mesh;
@@ -350,6 +353,26 @@ Status Builder::addShape(const Node& node, const Visit& item) {
   shape.appearance = look->appearance;
   shape.transform = toFloatMatrix(item.transform);
   shape.name = !node.defName.empty() ? node.defName : item.nameHint ? *item.nameHint : std::string();
+  scene_.shapes.push_back(std::move(shape));
+  return {};
+}
+
+// Text (6.47): quads textured with the glyphs (vrml_text.h), coloured by the shape's
+// Material; the Appearance's own texture, if any, gives way to the glyphs.
+Status Builder::addText(const Node& shapeNode, const Node& text, const ShapeLook& look, const Visit& item) {
+  auto built = buildText(text, resolve_, diagnostics_);
+  if (!built) return built.error();
+  if (!*built) return {};
+  auto texture = std::make_shared<Texture>();
+  texture->image = (*built)->glyphs;
+  texture->wrapS = texture->wrapT = TextureWrap::kClamp;
+  auto appearance = look.appearance ? std::make_shared<Appearance>(*look.appearance) : std::make_shared<Appearance>();
+  appearance->texture = std::move(texture);
+  Shape shape;
+  shape.mesh = std::make_shared<const Mesh>(std::move((*built)->mesh));
+  shape.appearance = std::move(appearance);
+  shape.transform = toFloatMatrix(item.transform);
+  shape.name = !shapeNode.defName.empty() ? shapeNode.defName : item.nameHint ? *item.nameHint : std::string();
   scene_.shapes.push_back(std::move(shape));
   return {};
 }

@@ -6,6 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/vrml/vrml_text.h"
+
 namespace pw::engine {
 namespace {
 
@@ -103,6 +105,40 @@ TEST(VrmlReader, OneAndTwoComponentPixelTexturesAreGrey) {
   EXPECT_TRUE(s.shapes[0].appearance->texture->image->grey);
   EXPECT_TRUE(s.shapes[1].appearance->texture->image->grey);
   EXPECT_FALSE(s.shapes[2].appearance->texture->image->grey);
+}
+
+// Text (6.47) with FontStyle (6.20): a quad per line in z = 0, textured with grey
+// glyphs (alpha = coverage) that the Material colours; the first baseline at y = 0.
+TEST(VrmlReader, TextIsAQuadPerLineTexturedWithItsGlyphs) {
+  if (!vrml::fontFile("SERIF", "PLAIN")) GTEST_SKIP() << "no DejaVu fonts (fonts-dejavu-core)";
+  const Scene s = read(R"(Shape {
+    appearance Appearance { material Material { diffuseColor 1 0 0 } }
+    geometry Text { string [ "Hello", "photowalk" ] fontStyle FontStyle { size 2 spacing 1.5 justify "MIDDLE" } }
+  })");
+  ASSERT_EQ(s.shapes.size(), 1u);
+  const Shape& shape = s.shapes[0];
+  ASSERT_EQ(shape.mesh->positions.size(), 8u);
+  EXPECT_FALSE(shape.mesh->solid);
+  ASSERT_TRUE(shape.appearance->material.has_value());
+  EXPECT_EQ(shape.appearance->material->diffuseColor, glm::vec3(1, 0, 0));
+  const Image& glyphs = *shape.appearance->texture->image;
+  EXPECT_TRUE(glyphs.grey);
+  int inked = 0;
+  for (int y = 0; y < glyphs.height; ++y) {
+    for (int x = 0; x < glyphs.width; ++x) inked += glyphs.pixel(x, y)[3] > 128;
+  }
+  EXPECT_GT(inked, 200) << "the glyphs are drawn";
+  const auto& p = shape.mesh->positions;
+  // MIDDLE: each line centred on x = 0; the second, longer line wider.
+  EXPECT_NEAR(p[0].x, -p[1].x, 1e-4f);
+  EXPECT_NEAR(p[4].x, -p[5].x, 1e-4f);
+  EXPECT_GT(p[5].x - p[4].x, p[1].x - p[0].x);
+  // Glyphs about `size` tall around the first baseline (y = 0): ascender above, descender below.
+  EXPECT_GT(p[2].y, 1.5f);
+  EXPECT_LT(p[0].y, 0.0f);
+  EXPECT_GT(p[0].y, -1.0f);
+  // The second line one size * spacing lower.
+  EXPECT_NEAR(p[4].y - p[0].y, -3.0f, 1e-4f);
 }
 
 TEST(VrmlReader, ViewpointsNavigationLightsBackgroundWorldInfo) {

@@ -69,10 +69,10 @@ struct Expectation {
   const char* why;
 };
 const std::map<std::string, Expectation> kExpected = {
-    {"cones.wrl", {0.35, "Text is not drawn; points are 1 pixel, view3dscene draws large squares"}},
+    {"cones.wrl", {0.35, "points are 1 pixel, view3dscene draws large squares"}},
     {"cones.wrl.gz", {0.35, "as cones.wrl"}},
     {"cones_gzipped_but_with_normal_extension.wrl",
-     {0.12, "as cones.wrl, and its longer Text widens view3dscene's bounding box, so its default camera differs"}},
+     {0.35, "as cones.wrl (its longer Text widens the bounding box, so the default camera moves back)"}},
     {"reuse_coordinate.wrl", {0.45, "its third shape is a PointSet: 1-pixel points against large squares"}},
     {"pointset.wrl", {0.99, "both frames are empty: the two points lie outside the default view"}},
 };
