@@ -10,7 +10,8 @@ namespace pw::editor {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: photowalk walk MODEL [--size WxH] [--no-vsync] [--cpu] [--msaa N] [--speed-scale K]\n"
+    "usage: photowalk walk MODEL [--size WxH] [--no-vsync] [--cpu] [--msaa N] [--per-pixel-lighting]\n"
+    "                      [--speed-scale K]\n"
     "                      [--replay SCRIPT] [--trace OUT.csv] [--screenshot-dir DIR] [--no-overlay]\n\n"
     "Opens a window and lets you walk through MODEL (.wrl, .wrl.gz, or 'sample'):\n"
     "click to capture the mouse and look around, W/A/S/D or the arrow keys to walk,\n"
@@ -21,6 +22,8 @@ constexpr const char* kUsage =
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "  --msaa N              multisampling samples (1: off); default 4 on a GPU, 1 on lavapipe,\n"
     "                        which also leaves out anisotropic filtering there to keep 60 fps\n"
+    "  --per-pixel-lighting  light per pixel on lavapipe too (it lights per vertex there, like\n"
+    "                        VRML97 browsers: fast, but large faces lose lamps' pools of light)\n"
     "  --speed-scale K       walk K times the model's NavigationInfo speed\n"
     "  --replay SCRIPT       play a scripted walk at a fixed 1/60 s per frame (README: Replay scripts)\n"
     "  --trace OUT.csv       write frame,x,y,z,yaw_deg,pitch_deg for every simulated frame\n"
@@ -37,6 +40,7 @@ int runWalk(Args& args) {
   const auto screenshotDir = args.value("--screenshot-dir");
   options.vsync = !args.flag("--no-vsync");
   options.forceCpu = args.flag("--cpu");
+  options.perPixelLighting = args.flag("--per-pixel-lighting");
   options.showOverlay = !args.flag("--no-overlay");
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());

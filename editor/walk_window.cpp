@@ -196,6 +196,7 @@ Status WalkApp::open() {
   rendererOptions.forceCpu = options_.forceCpu;
   rendererOptions.profile = engine::RenderProfile::kInteractive;
   rendererOptions.msaaSamples = options_.msaaSamples;
+  if (options_.perPixelLighting) rendererOptions.perVertexLighting = false;
   uint32_t count = 0;
   const char** extensions = glfwGetRequiredInstanceExtensions(&count);
   if (!extensions) return makeError("cannot open a window: this display cannot show Vulkan (" + glfwLastError() + ")");

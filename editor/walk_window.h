@@ -19,6 +19,7 @@ struct WalkOptions {
   bool vsync = true;
   bool forceCpu = false;
   int msaaSamples = 0;  // 0: the renderer's interactive default (4 on GPUs, 1 on lavapipe)
+  bool perPixelLighting = false;  // true: also on lavapipe, at its cost
   double speedScale = 1.0;
   std::string title = "photowalk";
   std::optional<std::vector<walk::ReplayEvent>> replay;  // set: deterministic, input ignored

@@ -141,7 +141,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& option
     return makeError(std::string(ctx.properties().deviceName) + " cannot render to 32-bit float depth; use PW_DEVICE=cpu");
   }
 
-  auto pipelines = gpu::PipelineLibrary::create(ctx, !keepFrameRate, keepFrameRate);
+  auto pipelines = gpu::PipelineLibrary::create(ctx, !keepFrameRate, options.perVertexLighting.value_or(keepFrameRate));
   if (!pipelines) return pipelines.error();
   impl->pipelines = std::move(*pipelines);
   auto pool = gpu::createFrameDescriptorPool(ctx, 1);

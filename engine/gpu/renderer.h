@@ -39,6 +39,9 @@ struct RendererOptions {
   // 1, 2, 4, 8...; an error when the device does not have it. 0: 4, or 1 for
   // kInteractive on a CPU device.
   int msaaSamples = 0;
+  // Unset: per vertex for kInteractive on a CPU device, else per pixel. Per vertex is
+  // what VRML97 browsers did (Gouraud): large faces lose the pools of point and spot lights.
+  std::optional<bool> perVertexLighting;
   enum class Validation { kDefault, kOn, kOff };
   // kDefault: on in Debug builds and whenever PW_VALIDATION=1 (a missing layer is then
   // a note, not an error); kOn: on, and a missing layer is an error (tests).

@@ -408,5 +408,16 @@ TEST_F(VertexLightingTest, TwoSidedSurfaceSeenFromBehindIsLitOnThatSide) {
   EXPECT_EQ(interactive()->validationMessageCount(), 0u);
 }
 
+TEST(VertexLightingChoice, TheInteractiveProfileCanStillLightPerPixel) {
+  RendererOptions options;
+  options.forceCpu = true;
+  options.profile = RenderProfile::kInteractive;
+  options.perVertexLighting = false;
+  auto renderer = Renderer::create(options);
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  EXPECT_FALSE((*renderer)->perVertexLighting());
+  EXPECT_EQ((*renderer)->msaaSamples(), 1) << "the rest of the profile stays";
+}
+
 }  // namespace
 }  // namespace pw::engine
