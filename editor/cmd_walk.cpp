@@ -23,7 +23,7 @@ constexpr const char* kUsage =
     "  --msaa N              multisampling samples (1: off); default 4 on a GPU, 1 on lavapipe,\n"
     "                        which also leaves out anisotropic filtering there to keep 60 fps\n"
     "  --per-pixel-lighting  light per pixel on lavapipe too (it lights per vertex there, like\n"
-    "                        VRML97 browsers: fast, but large faces lose lamps' pools of light)\n"
+    "                        VRML97 browsers, on faces cut small enough for it)\n"
     "  --speed-scale K       walk K times the model's NavigationInfo speed\n"
     "  --replay SCRIPT       play a scripted walk at a fixed 1/60 s per frame (README: Replay scripts)\n"
     "  --trace OUT.csv       write frame,x,y,z,yaw_deg,pitch_deg for every simulated frame\n"

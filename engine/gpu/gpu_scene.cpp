@@ -1,6 +1,9 @@
 #include "engine/gpu/gpu_scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <map>
 
 #include "engine/gpu/barriers.h"
 #include "engine/gpu/vk_check.h"
@@ -55,10 +58,48 @@ void recordMipChain(VkCommandBuffer cmd, const GpuImage& image) {
   }
 }
 
+// Lighting per vertex, a lamp's pool of light on a large face falls between its
+// corners: lit faces longer than 1/40 of the scene are cut up (up to 16 x 16 pieces a
+// triangle, 200000 triangles a mesh) when the scene has point or spot lights.
+Scene subdividedForVertexLighting(const Scene& scene) {
+  const bool localLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) {
+    return l.on && l.type != LightType::kDirectional;
+  });
+  if (!localLights) return scene;
+  const float target = std::max(glm::length(sceneBounds(scene).size()) / 40.0f, 1e-4f);
+  Scene out = scene;  // shapes share their meshes; only cut ones are replaced
+  std::map<std::pair<const Mesh*, int>, std::shared_ptr<const Mesh>> cut;
+  for (Shape& shape : out.shapes) {
+    if (!shape.mesh || shape.mesh->topology != Topology::kTriangles || !shape.appearance || !shape.appearance->material) continue;
+    const Mesh& mesh = *shape.mesh;
+    float longest = 0;
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      glm::vec3 p[3];
+      for (int c = 0; c < 3; ++c) {
+        const uint32_t index = mesh.indices[t + c];
+        if (index >= mesh.positions.size()) return scene;  // packScene reports it
+        p[c] = glm::vec3(shape.transform * glm::vec4(mesh.positions[index], 1.0f));
+      }
+      longest = std::max({longest, glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
+    }
+    if (!std::isfinite(longest)) continue;
+    const size_t triangles = mesh.indices.size() / 3;
+    int k = static_cast<int>(std::clamp(std::ceil(longest / target), 1.0f, 16.0f));
+    while (k > 1 && triangles * static_cast<size_t>(k) * k > 200000) --k;
+    if (k <= 1) continue;
+    auto& slot = cut[{shape.mesh.get(), k}];
+    if (!slot) slot = std::make_shared<const Mesh>(subdivideTriangles(mesh, k));
+    shape.mesh = slot;
+  }
+  return out;
+}
+
 }  // namespace
 
 Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context, const PipelineLibrary& pipelines,
-                                                         const Scene& scene) {
+                                                         const Scene& input) {
+  const Scene subdivided = pipelines.vertexLighting() ? subdividedForVertexLighting(input) : Scene{};
+  const Scene& scene = pipelines.vertexLighting() ? subdivided : input;
   auto packedResult = packScene(scene);
   if (!packedResult) return packedResult.error();
   PackedScene& packed = *packedResult;

@@ -58,4 +58,40 @@ Viewpoint defaultViewpoint(const Scene& scene) {
   return v;
 }
 
+Mesh subdivideTriangles(const Mesh& mesh, int k) {
+  if (k <= 1 || mesh.topology != Topology::kTriangles) return mesh;
+  Mesh out;
+  out.topology = mesh.topology;
+  out.solid = mesh.solid;
+  const float n = static_cast<float>(k);
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const uint32_t v[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
+    const uint32_t first = static_cast<uint32_t>(out.positions.size());
+    // Grid point (i, j): weights (k - i - j, i, j) / k on the corners. A point on an
+    // edge is the sum of the same two products from either triangle (the third is
+    // zero), and float addition commutes: neighbours agree exactly.
+    const auto blend = [&](const auto& values, int i, int j) {
+      const float wa = static_cast<float>(k - i - j), wb = static_cast<float>(i), wc = static_cast<float>(j);
+      return (wa * values[v[0]] + wb * values[v[1]] + wc * values[v[2]]) / n;
+    };
+    for (int j = 0; j <= k; ++j) {
+      for (int i = 0; i + j <= k; ++i) {
+        out.positions.push_back(blend(mesh.positions, i, j));
+        if (!mesh.normals.empty()) out.normals.push_back(blend(mesh.normals, i, j));
+        if (!mesh.texCoords.empty()) out.texCoords.push_back(blend(mesh.texCoords, i, j));
+        if (!mesh.colors.empty()) out.colors.push_back(blend(mesh.colors, i, j));
+      }
+    }
+    // Row j holds k - j + 1 points, starting after the rows before it.
+    const auto at = [&](int i, int j) { return first + static_cast<uint32_t>(j * (k + 1) - j * (j - 1) / 2 + i); };
+    for (int j = 0; j < k; ++j) {
+      for (int i = 0; i + j < k; ++i) {
+        out.indices.insert(out.indices.end(), {at(i, j), at(i + 1, j), at(i, j + 1)});
+        if (i + j + 1 < k) out.indices.insert(out.indices.end(), {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace pw::engine

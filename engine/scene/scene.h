@@ -152,6 +152,12 @@ Bounds sceneBounds(const Scene& scene);
 // whose vertices are already split where creases should be).
 void computeSmoothNormals(Mesh& mesh);
 
+// Each triangle cut into k x k smaller ones (k >= 1; points, lines and k = 1 come back
+// unchanged), every attribute interpolated. Points on a shared edge come out bit for
+// bit the same from both triangles, so the surface stays closed. For renderers that
+// light per vertex (large faces would otherwise lose a lamp's pool of light).
+Mesh subdivideTriangles(const Mesh& mesh, int k);
+
 // A viewpoint that shows the whole scene from +Z when a file has none.
 Viewpoint defaultViewpoint(const Scene& scene);
 

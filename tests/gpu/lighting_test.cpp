@@ -408,6 +408,18 @@ TEST_F(VertexLightingTest, TwoSidedSurfaceSeenFromBehindIsLitOnThatSide) {
   EXPECT_EQ(interactive()->validationMessageCount(), 0u);
 }
 
+// A large face under a point light: the renderer cuts it up for per-vertex lighting,
+// so the lamp's pool of light is not lost between its corners.
+TEST_F(VertexLightingTest, LargeFacesAreCutUpForPointLights) {
+  Light lamp;
+  lamp.type = LightType::kPoint;
+  lamp.position = {0.0f, 0.0f, 1.0f};
+  lamp.attenuation = {1.0f, 0.0f, 1.0f};  // sharply falling off: corners and centre differ
+  const Material m = testMaterial();
+  expectNear(centre(quadScene(m, {lamp})), test::vrmlLighting(centreSurface(m), linearised({lamp})), 3);
+  EXPECT_EQ(interactive()->validationMessageCount(), 0u);
+}
+
 TEST(VertexLightingChoice, TheInteractiveProfileCanStillLightPerPixel) {
   RendererOptions options;
   options.forceCpu = true;
