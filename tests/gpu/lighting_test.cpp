@@ -233,17 +233,27 @@ TEST_F(LightingTest, TransparentShapeBlendsOverTheBackgroundInLinearLight) {
   expectNear(renderCentre(scene), expected);
 }
 
-TEST_F(LightingTest, SolidFalseLightsTheBackFaceWithTheFlippedNormal) {
-  auto back = quadMesh();
-  for (glm::vec3& n : back->normals) n = -n;  // facing away from the camera
-  std::swap(back->indices[1], back->indices[2]);
-  std::swap(back->indices[4], back->indices[5]);
-  back->solid = false;
+// A two-sided (solid FALSE) quad turned away from the camera, and a sun lighting its
+// other side: seen from behind it must be lit as if its normal faced the camera.
+struct BackFacingCase {
+  std::shared_ptr<Mesh> mesh;
   Light sun;
-  sun.type = LightType::kDirectional;
-  sun.direction = {0.0f, -0.6f, -0.8f};
+};
+BackFacingCase backFacingTwoSidedQuad() {
+  BackFacingCase c{quadMesh(), {}};
+  for (glm::vec3& n : c.mesh->normals) n = -n;  // facing away from the camera
+  std::swap(c.mesh->indices[1], c.mesh->indices[2]);
+  std::swap(c.mesh->indices[4], c.mesh->indices[5]);
+  c.mesh->solid = false;
+  c.sun.type = LightType::kDirectional;
+  c.sun.direction = {0.0f, -0.6f, -0.8f};
+  return c;
+}
+
+TEST_F(LightingTest, SolidFalseLightsTheBackFaceWithTheFlippedNormal) {
+  const BackFacingCase c = backFacingTwoSidedQuad();
   const Material m = testMaterial();
-  expectNear(renderCentre(quadScene(m, {sun}, back)), test::vrmlLighting(centreSurface(m), linearised({sun})));
+  expectNear(renderCentre(quadScene(m, {c.sun}, c.mesh)), test::vrmlLighting(centreSurface(m), linearised({c.sun})));
 }
 
 TEST_F(LightingTest, SolidTrueCullsTheBackFace) {
@@ -395,16 +405,9 @@ TEST_F(VertexLightingTest, PointLightAndSpecularOnAFineGridAreClose) {
 }
 
 TEST_F(VertexLightingTest, TwoSidedSurfaceSeenFromBehindIsLitOnThatSide) {
-  auto back = quadMesh();
-  for (glm::vec3& n : back->normals) n = -n;  // facing away from the camera
-  std::swap(back->indices[1], back->indices[2]);
-  std::swap(back->indices[4], back->indices[5]);
-  back->solid = false;
-  Light sun;
-  sun.type = LightType::kDirectional;
-  sun.direction = {0.0f, -0.6f, -0.8f};
+  const BackFacingCase c = backFacingTwoSidedQuad();
   const Material m = testMaterial();
-  expectNear(centre(quadScene(m, {sun}, back)), test::vrmlLighting(centreSurface(m), linearised({sun})), 2);
+  expectNear(centre(quadScene(m, {c.sun}, c.mesh)), test::vrmlLighting(centreSurface(m), linearised({c.sun})), 2);
   EXPECT_EQ(interactive()->validationMessageCount(), 0u);
 }
 
