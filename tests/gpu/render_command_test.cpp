@@ -134,5 +134,46 @@ TEST(ConvertCommand, RefusesUnknownOutputsAndMissingInputsInOneLine) {
   EXPECT_FALSE(std::filesystem::exists(test::testOutputDir() / "y.glb"));
 }
 
+// photowalk tour: numbered frames along the model's tour (the sample room has none:
+// its viewpoints), a video where OpenCV can write one, one-line errors.
+TEST(TourCommand, WritesMovingFramesAndAVideo) {
+  const auto dir = test::testOutputDir() / "tour";
+  std::filesystem::remove_all(dir);
+  const std::string video = (dir / "tour.mp4").string();
+  const CommandRun run = photowalk("tour sample -o " + dir.string() + " --frames 6 --size 96x54 --cpu --video " + video);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::vector<Image> frames;
+  for (int i = 0; i < 6; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    auto frame = loadImage(dir / name);
+    ASSERT_TRUE(frame.ok()) << frame.message();
+    EXPECT_EQ(frame->width, 96);
+    EXPECT_EQ(frame->height, 54);
+    frames.push_back(std::move(*frame));
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_0006.png"));
+  // The sample room's tour goes round its viewpoints and back to the first.
+  EXPECT_TRUE(frames[0].rgba != frames[3].rgba) << "the camera moves";
+  if (run.output.find("cannot write that video format") == std::string::npos) {
+    EXPECT_GT(std::filesystem::file_size(video), 0u) << run.output;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << "a temporary file was left";
+  }
+}
+
+TEST(TourCommand, BadArgumentsAreOneLineErrors) {
+  const auto dir = test::testOutputDir() / "tour_bad";
+  std::filesystem::remove_all(dir);
+  for (const std::string& arguments : {"tour sample -o " + dir.string() + " --frames 0",
+                                       "tour /nonexistent/model.wrl -o " + dir.string(), std::string("tour sample")}) {
+    const CommandRun run = photowalk(arguments);
+    EXPECT_EQ(run.exitCode, 1) << arguments;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << arguments << ": " << run.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir)) << "nothing written for a tour that did not start";
+}
+
 }  // namespace
 }  // namespace pw::engine
