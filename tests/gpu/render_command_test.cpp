@@ -163,6 +163,22 @@ TEST(TourCommand, WritesMovingFramesAndAVideo) {
   }
 }
 
+// A frame that cannot be written (here a folder is in its way) stops the tour with a
+// one-line error, the frames written in the background included, and no video is left.
+TEST(TourCommand, AFrameThatCannotBeWrittenStopsTheTour) {
+  const auto dir = test::testOutputDir() / "tour_blocked";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "frame_0002.png");
+  const std::string video = (dir / "tour.mp4").string();
+  const CommandRun run = photowalk("tour sample -o " + dir.string() + " --frames 8 --size 64x36 --cpu --video " + video);
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("frame_0002.png"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(video));
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << "a temporary file was left";
+  }
+}
+
 TEST(TourCommand, BadArgumentsAreOneLineErrors) {
   const auto dir = test::testOutputDir() / "tour_bad";
   std::filesystem::remove_all(dir);
