@@ -35,8 +35,9 @@ Status writeViaTempFile(const fs::path& path, const std::function<Status(const f
   }
   fs::rename(temp, path, ec);
   if (ec) {
+    const std::string why = ec.message();  // before the clean-up below overwrites ec
     fs::remove(temp, ec);
-    return makeError(path.string() + ": cannot write: " + ec.message());
+    return makeError(path.string() + ": cannot write: " + why);
   }
   return {};
 }
