@@ -15,6 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "bench/bench_timing.h"
 #include "editor/pipeline.h"
 #include "editor/shot_file.h"
 #include "engine/vrml/vrml_writer.h"
@@ -25,10 +26,7 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using pw::bench::median;
 
 }  // namespace
 

@@ -1,3 +1,4 @@
+#include "bench/bench_timing.h"
 // metrology_bench: measure and rectify on a 12-megapixel photo, medians.
 //
 // The photo is the sample corridor (assets/corridor.png, 1280x720) upscaled to about
@@ -17,23 +18,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "bench/bench_timing.h"
 #include "metrology/measure.h"
 #include "metrology/rectify.h"
 
 namespace {
 
 using namespace pw::metrology;
+using pw::bench::medianMs;
 
-double medianMs(int runs, const std::function<void()>& work) {
-  std::vector<double> ms;
-  for (int i = 0; i < runs; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(ms.begin(), ms.end());
-  return ms[ms.size() / 2];
-}
 
 // The sample shot's corners (assets/corridor.json) in its 1280x720 photo.
 constexpr double kCorners[kCornerCount][2] = {{537.1304, 293.6909}, {683.3727, 293.6909}, {537.1304, 421.653},

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_timing.h"
 #include "engine/gpu/renderer.h"
 #include "engine/scene/sample_scene.h"
 
@@ -42,11 +43,7 @@ double childrenCpuMs() {
   return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using pw::bench::median;
 
 int fail(const std::string& message) {
   std::fprintf(stderr, "render_bench: %s\n", message.c_str());

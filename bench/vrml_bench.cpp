@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/atomic_file.h"
+#include "bench/bench_timing.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_reader.h"
 #include "engine/vrml/vrml_writer.h"
@@ -23,17 +24,7 @@
 namespace {
 
 using namespace pw::engine;
-
-double medianMs(int runs, const std::function<void()>& work) {
-  std::vector<double> ms;
-  for (int i = 0; i < runs; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(ms.begin(), ms.end());
-  return ms[ms.size() / 2];
-}
+using pw::bench::medianMs;
 
 Scene terrain(int columns, int rows) {
   auto mesh = std::make_shared<Mesh>();
