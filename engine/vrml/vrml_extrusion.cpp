@@ -131,12 +131,7 @@ Result<std::optional<Mesh>> buildExtrusion(const Node& node, const GeometryOptio
     }
   }
 
-  PolygonSoup soup;
-  soup.points = points;
-  soup.ccw = getBool(node, "ccw");
-  soup.convex = getBool(node, "convex");
-  soup.solid = getBool(node, "solid");
-  soup.creaseAngle = getDouble(node, "creaseAngle");
+  PolygonSoup soup = surfaceSoup(node, points);
   // Texture coordinates (6.18.3): sides by arc length along the cross-section (s) and
   // the spine (t); caps by the cross-section's bounding box.
   std::vector<glm::vec2> tex;

@@ -112,6 +112,17 @@ bool cornerIndices(const std::vector<int32_t>& index, bool perVertex, size_t arr
 
 }  // namespace
 
+PolygonSoup surfaceSoup(const Node& node, std::span<const glm::vec3> points) {
+  PolygonSoup soup;
+  soup.points = points;
+  soup.ccw = getBool(node, "ccw");
+  // ElevationGrid has no convex field: its cells are quads, convex.
+  soup.convex = node.typeName() == "ElevationGrid" || getBool(node, "convex");
+  soup.solid = getBool(node, "solid");
+  soup.creaseAngle = getDouble(node, "creaseAngle");
+  return soup;
+}
+
 Result<std::optional<Mesh>> buildIndexedFaceSet(const Node& node, const NodeResolver& resolve,
                                                 const GeometryOptions& options, Diagnostics* diagnostics) {
   auto coordAttr = attribute(node, "coord", "Coordinate", "point", resolve, diagnostics);
@@ -123,12 +134,7 @@ Result<std::optional<Mesh>> buildIndexedFaceSet(const Node& node, const NodeReso
   const std::vector<glm::vec3> points = toVectors<glm::vec3>(*coordAttr->floats);
   const std::vector<int32_t>& coordIndex = getInts(node, "coordIndex");
 
-  PolygonSoup soup;
-  soup.points = points;
-  soup.ccw = getBool(node, "ccw");
-  soup.convex = getBool(node, "convex");
-  soup.solid = getBool(node, "solid");
-  soup.creaseAngle = getDouble(node, "creaseAngle");
+  PolygonSoup soup = surfaceSoup(node, points);
 
   // Faces: runs of coordIndex ended by -1 (or the end of the list).
   std::vector<uint32_t> cornerListPos, cornerFace, faceListIndex;
@@ -247,11 +253,7 @@ Result<std::optional<Mesh>> buildElevationGrid(const Node& node, const NodeResol
       grid[k] = {static_cast<float>(i) / (xDim - 1), static_cast<float>(j) / (zDim - 1)};
     }
   }
-  PolygonSoup soup;
-  soup.points = points;
-  soup.ccw = getBool(node, "ccw");
-  soup.solid = getBool(node, "solid");
-  soup.creaseAngle = getDouble(node, "creaseAngle");
+  PolygonSoup soup = surfaceSoup(node, points);
   std::vector<uint32_t> cornerFace;
   for (int32_t j = 0; j + 1 < zDim; ++j) {
     for (int32_t i = 0; i + 1 < xDim; ++i) {

@@ -6,10 +6,12 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 
 #include "base/result.h"
 #include "engine/scene/scene.h"
 #include "engine/vrml/diagnostics.h"
+#include "engine/vrml/polygon_mesh.h"
 #include "engine/vrml/vrml_node.h"
 
 namespace pw::engine::vrml {
@@ -31,6 +33,10 @@ Mesh makeBox(const glm::vec3& size, bool texCoords);
 Mesh makeSphere(float radius, bool texCoords, int slices = 48, int stacks = 24);
 Mesh makeCylinder(float radius, float height, bool side, bool top, bool bottom, bool texCoords, int slices = 48);
 Mesh makeCone(float bottomRadius, float height, bool side, bool bottom, bool texCoords, int slices = 48);
+
+// The surface fields IndexedFaceSet, ElevationGrid and Extrusion share (ccw, solid,
+// creaseAngle, and convex where the node has it) on a soup of `points`.
+PolygonSoup surfaceSoup(const Node& node, std::span<const glm::vec3> points);
 
 // IndexedFaceSet, ElevationGrid (vrml_face_set.cpp).
 Result<std::optional<Mesh>> buildIndexedFaceSet(const Node& node, const NodeResolver& resolve,

@@ -186,6 +186,16 @@ Status Parser::skipBalanced(SourcePos open, std::string_view what) {
   return {};
 }
 
+Status Parser::beginNodeValue(FieldType type, const char* context) {
+  if (type == FieldType::kMFNode && tokens_.peek().kind == TokenKind::kOpenBracket) {
+    Frame list;
+    list.kind = FrameKind::kNodeList;
+    list.open = tokens_.next().pos;
+    return push(std::move(list));
+  }
+  return startNodeStatement(context);
+}
+
 Status Parser::startNodeStatement(const char* context) {
   const Token first = tokens_.peek();
   if (first.kind != TokenKind::kIdentifier) return errorHere(first, context);
@@ -360,15 +370,9 @@ Status Parser::stepNode() {
     return parseFieldValue(tokens_, decl.type, f.node->set(member), file_->displayName, name);
   }
   f.pendingField = member;
-  if (decl.type == FieldType::kMFNode && tokens_.peek().kind == TokenKind::kOpenBracket) {
-    Frame list;
-    list.kind = FrameKind::kNodeList;
-    list.open = tokens_.next().pos;
-    return push(std::move(list));
-  }
   const std::string context = "a node, USE" + std::string(decl.type == FieldType::kSFNode ? ", NULL" : ", '['") +
                               " for field '" + name + "' (" + fieldTypeName(decl.type) + ")";
-  return startNodeStatement(context.c_str());
+  return beginNodeValue(decl.type, context.c_str());
 }
 
 }  // namespace detail

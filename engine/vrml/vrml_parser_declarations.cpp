@@ -83,13 +83,7 @@ Status Parser::stepInterface() {
     return parseFieldValue(tokens_, decl.type, decl.defaultValue, file_->displayName, decl.name);
   }
   f.pendingDefault = true;
-  if (decl.type == FieldType::kMFNode && tokens_.peek().kind == TokenKind::kOpenBracket) {
-    Frame list;
-    list.kind = FrameKind::kNodeList;
-    list.open = tokens_.next().pos;
-    return push(std::move(list));
-  }
-  return startNodeStatement("a node, USE or NULL as the default value");
+  return beginNodeValue(decl.type, "a node, USE or NULL as the default value");
 }
 
 Status Parser::beginProto() {
@@ -179,13 +173,7 @@ Status Parser::parseScriptDeclaration() {
     return parseFieldValue(tokens_, decl.type, f.node->set(member), file_->displayName, decl.name);
   }
   f.pendingField = member;
-  if (decl.type == FieldType::kMFNode && tokens_.peek().kind == TokenKind::kOpenBracket) {
-    Frame list;
-    list.kind = FrameKind::kNodeList;
-    list.open = tokens_.next().pos;
-    return push(std::move(list));
-  }
-  return startNodeStatement("a node, USE or NULL");
+  return beginNodeValue(decl.type, "a node, USE or NULL");
 }
 
 }  // namespace pw::engine::vrml::detail

@@ -52,6 +52,9 @@ class Parser {
   Status stepNode();
   Status stepInterface();
   Status startNodeStatement(const char* context);
+  // A node-valued field's value: an MFNode's '[' opens a node list, anything else is
+  // one node statement (`context` says what was expected).
+  Status beginNodeValue(FieldType type, const char* context);
   Status finishNode();
   Status beginProto();
   Status parseExternProto();
