@@ -1,5 +1,4 @@
 // photowalk render, end to end: exit codes, messages, and the PNG it writes.
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -10,27 +9,13 @@
 
 #include "engine/scene/image.h"
 #include "tests/gpu/image_compare.h"
+#include "tests/support/run_command.h"
 
 namespace pw::engine {
 namespace {
 
-struct CommandRun {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr
-};
-
-CommandRun photowalk(const std::string& arguments) {
-  CommandRun run;
-  const std::string command = std::string(PW_PHOTOWALK) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  size_t n = 0;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using test::CommandRun;
+CommandRun photowalk(const std::string& arguments) { return test::runCommand(std::string(PW_PHOTOWALK) + " " + arguments); }
 
 std::filesystem::path outputPath(const std::string& name) {
   const std::filesystem::path path = test::testOutputDir() / name;

@@ -3,7 +3,6 @@
 // (the first viewpoint, where view3dscene starts) looks like photowalk's own render of it; the .glb passes the Khronos glTF-Validator.
 // Each check skips where its tool is not installed (scripts/install-deps.sh --with-extras,
 // scripts/install-tools.sh).
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -15,26 +14,14 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/support/run_command.h"
+
 namespace pw::editor {
 namespace {
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int exitCode = -1;
-  std::string output;
-};
-
-CommandRun shell(const std::string& command) {
-  CommandRun run;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  size_t n = 0;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using test::CommandRun;
+test::CommandRun shell(const std::string& command) { return test::runCommand(command); }
 
 bool onPath(const std::string& program) { return shell("command -v " + program).exitCode == 0; }
 

@@ -1,7 +1,6 @@
 // photowalk walk, end to end under an X server (xvfb-run) on lavapipe: scripted walks
 // through the sample corridor model, checked through the trace and the captures.
 // Validation is on (PW_VALIDATION=1): walk exits non-zero on any validation message.
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,28 +14,14 @@
 #include <gtest/gtest.h>
 
 #include "engine/scene/image.h"
+#include "tests/support/run_command.h"
 
 namespace pw::walk {
 namespace {
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int exitCode = -1;
-  std::string output;
-};
-
-CommandRun photowalk(const std::string& arguments) {
-  CommandRun run;
-  const std::string command = std::string(PW_PHOTOWALK) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  size_t n = 0;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using test::CommandRun;
+CommandRun photowalk(const std::string& arguments) { return test::runCommand(std::string(PW_PHOTOWALK) + " " + arguments); }
 
 struct TraceRow {
   long frame;
