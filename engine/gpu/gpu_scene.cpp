@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <optional>
 
 #include "engine/gpu/barriers.h"
 #include "engine/gpu/vk_check.h"
@@ -60,15 +61,17 @@ void recordMipChain(VkCommandBuffer cmd, const GpuImage& image) {
 
 // Lighting per vertex, a lamp's pool of light on a large face falls between its
 // corners: lit faces longer than 1/40 of the scene are cut up (up to 16 x 16 pieces a
-// triangle, 200000 triangles a mesh) when the scene has point or spot lights.
-Scene subdividedForVertexLighting(const Scene& scene) {
+// triangle, 200000 triangles a mesh) when the scene has point or spot lights. Nothing
+// when no face needs it.
+std::optional<Scene> subdividedForVertexLighting(const Scene& scene) {
   const bool localLights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) {
     return l.on && l.type != LightType::kDirectional;
   });
-  if (!localLights) return scene;
+  if (!localLights) return std::nullopt;
   const float target = std::max(glm::length(sceneBounds(scene).size()) / 40.0f, 1e-4f);
   Scene out = scene;  // shapes share their meshes; only cut ones are replaced
   std::map<std::pair<const Mesh*, int>, std::shared_ptr<const Mesh>> cut;
+  bool any = false;
   for (Shape& shape : out.shapes) {
     if (!shape.mesh || shape.mesh->topology != Topology::kTriangles || !shape.appearance || !shape.appearance->material) continue;
     const Mesh& mesh = *shape.mesh;
@@ -77,7 +80,7 @@ Scene subdividedForVertexLighting(const Scene& scene) {
       glm::vec3 p[3];
       for (int c = 0; c < 3; ++c) {
         const uint32_t index = mesh.indices[t + c];
-        if (index >= mesh.positions.size()) return scene;  // packScene reports it
+        if (index >= mesh.positions.size()) return std::nullopt;  // packScene reports it
         p[c] = glm::vec3(shape.transform * glm::vec4(mesh.positions[index], 1.0f));
       }
       longest = std::max({longest, glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
@@ -90,7 +93,9 @@ Scene subdividedForVertexLighting(const Scene& scene) {
     auto& slot = cut[{shape.mesh.get(), k}];
     if (!slot) slot = std::make_shared<const Mesh>(subdivideTriangles(mesh, k));
     shape.mesh = slot;
+    any = true;
   }
+  if (!any) return std::nullopt;
   return out;
 }
 
@@ -98,8 +103,8 @@ Scene subdividedForVertexLighting(const Scene& scene) {
 
 Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context, const PipelineLibrary& pipelines,
                                                          const Scene& input) {
-  const Scene subdivided = pipelines.vertexLighting() ? subdividedForVertexLighting(input) : Scene{};
-  const Scene& scene = pipelines.vertexLighting() ? subdivided : input;
+  const std::optional<Scene> subdivided = pipelines.vertexLighting() ? subdividedForVertexLighting(input) : std::nullopt;
+  const Scene& scene = subdivided ? *subdivided : input;
   auto packedResult = packScene(scene);
   if (!packedResult) return packedResult.error();
   PackedScene& packed = *packedResult;
