@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace pw::engine {
 namespace {
@@ -128,6 +129,28 @@ void CollisionWorld::build() {
     pending.push_back(left);
     pending.push_back(left + 1);
   }
+}
+
+CollisionWorld::TreeStats CollisionWorld::treeStats() const {
+  TreeStats stats;
+  if (nodes_.empty()) return stats;
+  std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 1u}};  // node, its level
+  while (!pending.empty()) {
+    const auto [index, level] = pending.back();
+    pending.pop_back();
+    const Node& node = nodes_[index];
+    ++stats.nodes;
+    stats.depth = std::max(stats.depth, level);
+    if (node.count > 0) {
+      ++stats.leaves;
+      stats.largestLeaf = std::max(stats.largestLeaf, node.count);
+      stats.leafTriangles += node.count;
+    } else {
+      pending.push_back({node.first, level + 1});
+      pending.push_back({node.first + 1, level + 1});
+    }
+  }
+  return stats;
 }
 
 template <class Visit>

@@ -35,6 +35,19 @@ class CollisionWorld {
 
   size_t triangleCount() const { return triangles_.size(); }
 
+  // The shape of the bounding-volume hierarchy, read-only, for tests and statistics.
+  // depth counts levels (a lone leaf is 1, an empty world 0). The traversals keep a
+  // fixed stack of 64 entries, so a tree much deeper than log2(triangles) would skip
+  // nodes; the build's median split keeps depth at ceil(log2(triangles / 4)) + 1.
+  struct TreeStats {
+    uint32_t depth = 0;
+    uint32_t nodes = 0;
+    uint32_t leaves = 0;
+    uint32_t largestLeaf = 0;  // most triangles in one leaf
+    uint32_t leafTriangles = 0;  // triangles over all leaves (each triangle in one leaf)
+  };
+  TreeStats treeStats() const;
+
  private:
   struct Triangle {
     glm::vec3 a, b, c;

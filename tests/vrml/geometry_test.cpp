@@ -29,6 +29,24 @@ void expectOutwardWinding(const Mesh& m) {
   }
 }
 
+// For a convex solid around `inside`: every non-degenerate triangle faces away from
+// it, by its winding and by its vertex normals, so an inside-out solid (winding and
+// normals flipped together, which expectOutwardWinding cannot see) fails.
+void expectFacesPointAwayFrom(const Mesh& m, const glm::vec3& inside) {
+  ASSERT_EQ(m.indices.size() % 3, 0u);
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const glm::vec3 n = faceNormal(m, t);
+    if (glm::length(n) < 1e-6f) continue;
+    const glm::vec3 centroid =
+        (m.positions[m.indices[t]] + m.positions[m.indices[t + 1]] + m.positions[m.indices[t + 2]]) / 3.0f;
+    EXPECT_GT(glm::dot(n, centroid - inside), 0.0f) << "triangle " << t / 3 << " winds inwards";
+    for (size_t k = 0; k < 3; ++k) {
+      EXPECT_GT(glm::dot(m.normals[m.indices[t + k]], centroid - inside), 0.0f)
+          << "triangle " << t / 3 << " vertex " << k << ": normal points inwards";
+    }
+  }
+}
+
 Scene read(const std::string& body, Diagnostics* d = nullptr) {
   auto scene = engine::readVrmlString("#VRML V2.0 utf8\n" + body, PW_TEST_DATA_DIR "/vrml", d);
   EXPECT_TRUE(scene.ok()) << scene.message();
@@ -40,6 +58,7 @@ TEST(VrmlPrimitives, BoxFacesPointOutAndShowTheImageUpright) {
   EXPECT_EQ(box.positions.size(), 24u);
   EXPECT_EQ(box.indices.size(), 36u);
   expectOutwardWinding(box);
+  expectFacesPointAwayFrom(box, glm::vec3(0.0f));
   EXPECT_EQ(localBounds(box).max, glm::vec3(1, 2, 3));
   // Front face: bottom-left corner at texture (0, 0); top face: its -Z edge is the image top.
   for (size_t i = 0; i < box.positions.size(); ++i) {
@@ -59,6 +78,7 @@ TEST(VrmlPrimitives, BoxFacesPointOutAndShowTheImageUpright) {
 TEST(VrmlPrimitives, SphereWrapsTheTextureFromTheBack) {
   const Mesh s = makeSphere(2.0f, true);
   expectOutwardWinding(s);
+  expectFacesPointAwayFrom(s, glm::vec3(0.0f));
   for (size_t i = 0; i < s.positions.size(); ++i) {
     EXPECT_NEAR(glm::length(s.positions[i]), 2.0f, 1e-5f);
     EXPECT_NEAR(glm::dot(s.normals[i], s.positions[i] / 2.0f), 1.0f, 1e-5f);
@@ -80,10 +100,13 @@ TEST(VrmlPrimitives, CylinderAndConePartsCanBeLeftOut) {
   const Mesh all = makeCylinder(1, 2, true, true, true, false, 16);
   const Mesh sideOnly = makeCylinder(1, 2, true, false, false, false, 16);
   expectOutwardWinding(all);
+  expectFacesPointAwayFrom(all, glm::vec3(0.0f));
+  expectFacesPointAwayFrom(sideOnly, glm::vec3(0.0f));
   EXPECT_EQ(all.indices.size(), 3u * (32 + 16 + 16));
   EXPECT_EQ(sideOnly.indices.size(), 3u * 32);
   const Mesh cone = makeCone(1, 2, true, true, false, 16);
   expectOutwardWinding(cone);
+  expectFacesPointAwayFrom(cone, glm::vec3(0.0f));
   EXPECT_EQ(localBounds(cone).max.y, 1.0f);
   EXPECT_EQ(makeCone(1, 2, false, true, false, 16).indices.size(), 3u * 16);
   // The side normal of a cone with height 2 and radius 1 leans up by atan(1/2).
@@ -147,6 +170,7 @@ TEST(VrmlFaceSet, CreaseAngleSplitsOrSmoothsNormals) {
   const Mesh& f = *flat.shapes.at(0).mesh;
   EXPECT_EQ(f.positions.size(), 24u);
   expectOutwardWinding(f);
+  expectFacesPointAwayFrom(f, glm::vec3(0.0f));
   for (const glm::vec3& n : f.normals) EXPECT_NEAR(std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z), 1.0f, 1e-6f);
   const Scene smooth = read(cube("1.6"));  // above 90 degrees: every cube edge is smoothed
   const Mesh& s = *smooth.shapes.at(0).mesh;
@@ -263,6 +287,7 @@ TEST(VrmlGeometry, DefaultExtrusionIsAClosedBox) {
   const Mesh& m = *s.shapes.at(0).mesh;
   EXPECT_EQ(m.indices.size(), 3u * 12);  // four sides and two caps, two triangles each
   expectOutwardWinding(m);
+  expectFacesPointAwayFrom(m, glm::vec3(0, 0.5f, 0));
   EXPECT_EQ(localBounds(m).min, glm::vec3(-1, 0, -1));
   EXPECT_EQ(localBounds(m).max, glm::vec3(1, 1, 1));
   double area = 0;
