@@ -1,8 +1,11 @@
 #include "tests/gpu/image_compare.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <vector>
 
 namespace pw::test {
 
@@ -32,6 +35,85 @@ ImageDifference compareImages(const engine::Image& actual, const engine::Image& 
   d.fractionWithin2 = pixels ? double(within2) / double(pixels) : 1.0;
   d.fractionWithin16 = pixels ? double(within16) / double(pixels) : 1.0;
   return d;
+}
+
+std::string TileDifference::describe() const {
+  if (sizeMismatch) return "image sizes differ";
+  std::ostringstream s;
+  s.precision(3);
+  s << columns << "x" << rows << " tiles: worst tile (" << worstColumn << ", " << worstRow << ") differs by " << worst
+    << "/255 in its mean colour, tiles on average by " << average << "/255";
+  if (gain[0] != 1 || gain[1] != 1 || gain[2] != 1) s << " (after gains " << gain[0] << ", " << gain[1] << ", " << gain[2] << ")";
+  return s.str();
+}
+
+namespace {
+
+// Mean RGB of each tile, row by row.
+std::vector<std::array<double, 3>> tileMeans(const engine::Image& image, int columns, int rows) {
+  std::vector<std::array<double, 3>> means(static_cast<size_t>(columns) * rows);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < columns; ++c) {
+      const int x0 = c * image.width / columns, x1 = (c + 1) * image.width / columns;
+      const int y0 = r * image.height / rows, y1 = (r + 1) * image.height / rows;
+      std::array<double, 3> sum{0, 0, 0};
+      for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+          for (int k = 0; k < 3; ++k) sum[k] += image.pixel(x, y)[k];
+        }
+      }
+      const double n = std::max(1, (x1 - x0) * (y1 - y0));
+      for (int k = 0; k < 3; ++k) means[static_cast<size_t>(r) * columns + c][k] = sum[k] / n;
+    }
+  }
+  return means;
+}
+
+}  // namespace
+
+TileDifference compareTiles(const engine::Image& actual, const engine::Image& expected, int columns, int rows,
+                            TileGain gain) {
+  TileDifference d;
+  d.columns = columns;
+  d.rows = rows;
+  if (actual.width != expected.width || actual.height != expected.height || actual.empty() || columns < 1 ||
+      rows < 1 || columns > actual.width || rows > actual.height) {
+    d.sizeMismatch = true;
+    return d;
+  }
+  const auto a = tileMeans(actual, columns, rows), e = tileMeans(expected, columns, rows);
+  if (gain == TileGain::kMatchGlobalMean) {
+    // Tiles differ in size by at most a pixel; weighting them alike is close enough.
+    for (int k = 0; k < 3; ++k) {
+      double sumA = 0, sumE = 0;
+      for (size_t t = 0; t < a.size(); ++t) {
+        sumA += a[t][k];
+        sumE += e[t][k];
+      }
+      d.gain[k] = sumA > 0 ? sumE / sumA : 1.0;
+    }
+  }
+  double total = 0;
+  for (size_t t = 0; t < a.size(); ++t) {
+    double tileWorst = 0;
+    for (int k = 0; k < 3; ++k) tileWorst = std::max(tileWorst, std::abs(a[t][k] * d.gain[k] - e[t][k]));
+    total += tileWorst;
+    if (tileWorst > d.worst) {
+      d.worst = tileWorst;
+      d.worstColumn = static_cast<int>(t % columns);
+      d.worstRow = static_cast<int>(t / columns);
+    }
+  }
+  d.average = total / static_cast<double>(a.size());
+  return d;
+}
+
+engine::Image mirroredLeftRight(const engine::Image& image) {
+  engine::Image out = image;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) std::copy_n(image.pixel(image.width - 1 - x, y), 4, out.pixel(x, y));
+  }
+  return out;
 }
 
 engine::Image differenceImage(const engine::Image& actual, const engine::Image& expected) {
