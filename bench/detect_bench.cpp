@@ -53,10 +53,10 @@ Timing median(int runs, const std::function<void()>& work) {
 
 int main() {
   using namespace pw::metrology::detect;
-  const std::string path = std::string(PW_SHARED_DIR) + "/corridors/corridor_a.png";
+  const std::string path = std::string(PW_GROUNDTRUTH_DIR) + "/corridor_a.png";
   const cv::Mat small = cv::imread(path, cv::IMREAD_COLOR);
   if (small.empty()) {
-    std::fprintf(stderr, "error: %s not found (the shared corridors must be beside the checkout)\n", path.c_str());
+    std::fprintf(stderr, "error: %s not found (the build renders it: target groundtruth)\n", path.c_str());
     return 1;
   }
   constexpr double kFocalSmall = 692.820323;

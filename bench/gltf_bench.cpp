@@ -60,12 +60,12 @@ std::vector<double> interleavedMediansMs(int rounds, const std::vector<std::func
   return medians;
 }
 
-// The corridor photos from ../shared (what photowalk textures its planes with), or a
+// The ground-truth corridor photos (what photowalk textures its planes with), or a
 // noisy stand-in of the same size when they are not there.
 std::vector<std::shared_ptr<const Image>> photos() {
   std::vector<std::shared_ptr<const Image>> out;
   for (char c = 'a'; c <= 'e'; ++c) {
-    auto image = loadImage(fs::path(PW_SHARED_DIR) / "corridors" / (std::string("corridor_") + c + ".png"));
+    auto image = loadImage(fs::path(PW_GROUNDTRUTH_DIR) / (std::string("corridor_") + c + ".png"));
     if (image) {
       out.push_back(std::make_shared<Image>(std::move(*image)));
       continue;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
+#include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
+
+#include "tests/support/groundtruth.h"
 
 namespace pw::metrology::detect::testing {
 
@@ -25,24 +27,17 @@ glm::dvec2 leastSquaresMeet(const std::vector<std::pair<glm::dvec2, glm::dvec2>>
 
 std::vector<CorridorCase> loadCorridorCases() {
   std::vector<CorridorCase> cases;
-  const std::filesystem::path dir = std::filesystem::path(PW_SHARED_DIR) / "corridors";
-  for (const char* name : {"corridor_a", "corridor_b", "corridor_c", "corridor_d", "corridor_e"}) {
-    std::ifstream in(dir / (std::string(name) + ".json"));
-    if (!in) continue;
-    const nlohmann::json gt = nlohmann::json::parse(in);
+  for (const pw::groundtruth::GroundTruth& g : pw::groundtruth::loadAllGroundTruth()) {
     CorridorCase c;
-    c.name = name;
-    c.imagePath = (dir / gt["image"].get<std::string>()).string();
+    c.name = g.name;
+    c.imagePath = g.image.string();
     c.image = cv::imread(c.imagePath, cv::IMREAD_COLOR);
-    if (c.image.empty()) continue;
-    c.focalPx = gt["focal_px"];
-    c.principalPoint = {gt["principal_point"][0], gt["principal_point"][1]};
-    c.cameraHeightM = gt["camera_height_m"];
-    c.widthM = gt["width_m"], c.heightM = gt["height_m"], c.lengthM = gt["length_m"];
-    for (int k = 0; k < 8; ++k) {
-      const auto& p = gt["corners_px"]["P" + std::to_string(k + 1)];
-      c.corners[k] = {p[0], p[1]};
-    }
+    if (c.image.empty()) throw std::runtime_error("cannot read " + c.imagePath);
+    c.focalPx = g.focalPx;
+    c.principalPoint = g.principalPointPx;
+    c.cameraHeightM = g.cameraHeightM;
+    c.widthM = g.widthM, c.heightM = g.heightM, c.lengthM = g.lengthM;
+    c.corners = g.cornersPx;
     c.vanishingPoint = leastSquaresMeet({{c.corners[0], c.corners[6]}, {c.corners[1], c.corners[7]},
                                          {c.corners[2], c.corners[4]}, {c.corners[3], c.corners[5]}});
     cases.push_back(std::move(c));

@@ -1,5 +1,5 @@
-// The shared POV-Ray corridors (../shared/corridors) with their ground truth, which
-// only tests read.
+// The ground-truth POV-Ray corridors (tests/support/groundtruth.h) as detection
+// cases, with their photos loaded.
 #pragma once
 
 #include <array>
@@ -26,7 +26,7 @@ struct CorridorCase {
   glm::dvec2 vanishingPoint{0, 0};
 };
 
-// Empty when ../shared/corridors is not beside the checkout.
+// Throws when a scene is missing.
 std::vector<CorridorCase> loadCorridorCases();
 
 double medianOf(std::vector<double> values);

@@ -1,6 +1,9 @@
-// The shared POV-Ray corridors: detection against the exact ground truth, and the
+// The ground-truth POV-Ray corridors: detection against the exact ground truth, and the
 // dimensions `measure` gets from the detected shot. Prints the table (ctest -V).
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -15,10 +18,41 @@ namespace {
 using testing::CorridorCase;
 using testing::medianOf;
 
-// Issue 7's targets with the focal length given.
-constexpr double kMaxFarCornerMedianPx = 2.0;
-constexpr double kMaxVanishingPointPx = 1.0;
-constexpr double kMaxWidthHeightPercent = 2.0;
+// Thresholds: twice the error measured on each scene (the tables below, printed by
+// these tests), or the measured error plus 0.05 px / 0.05 %, whichever is larger (so
+// that a figure near zero does not fail on the last bit of a different CPU's maths).
+struct Measured {
+  double farMedianPx, farMaxPx, nearMedianPx, vpPx, widthPct, heightPct, lengthPct;
+};
+double limitPx(double measured) { return std::max(2 * measured, measured + 0.05); }
+double limitPct(double measured) { return std::max(2 * std::abs(measured), std::abs(measured) + 0.05); }
+
+// Focal length given, P5..P8 on the marked band (measured 2026-11-29).
+const std::map<std::string, Measured> kFocalGiven = {
+    {"corridor_a", {0.109, 0.129, 0.183, 0.141, 0.13, 0.05, 0.18}},
+    {"corridor_b", {0.359, 0.497, 0.338, 0.281, 0.02, 0.14, 0.56}},
+    {"corridor_c", {0.161, 0.281, 0.276, 0.404, 0.01, 0.13, 0.15}},
+    {"corridor_d", {0.136, 0.339, 0.937, 0.096, 0.23, 0.02, 0.28}},
+    {"corridor_e", {0.216, 0.252, 0.266, 0.054, 0.05, 0.09, 0.44}},
+    {"corridor_f", {0.093, 0.139, 0.379, 0.028, 0.01, 0.05, 0.18}},
+    {"corridor_g", {0.113, 0.161, 0.081, 0.199, 0.06, 0.06, 0.10}},
+    {"corridor_h", {0.193, 0.219, 0.856, 0.575, 0.20, 0.13, 0.03}},
+};
+// Focal length given, P5..P8 at the image edge: P1..P4, width and height only.
+const std::map<std::string, Measured> kNearAtImageEdge = {
+    {"corridor_a", {0.109, 0.129, 0, 0.141, 0.32, 0.14, 0}}, {"corridor_b", {0.359, 0.497, 0, 0.281, 0.84, 0.78, 0}},
+    {"corridor_c", {0.161, 0.281, 0, 0.404, 0.01, 0.09, 0}}, {"corridor_d", {0.136, 0.339, 0, 0.096, 0.03, 0.12, 0}},
+    {"corridor_e", {0.216, 0.252, 0, 0.054, 1.38, 0.42, 0}}, {"corridor_f", {0.093, 0.139, 0, 0.028, 0.22, 0.18, 0}},
+    {"corridor_g", {0.113, 0.161, 0, 0.199, 0.53, 0.26, 0}}, {"corridor_h", {0.193, 0.219, 0, 0.575, 0.73, 0.42, 0}},
+};
+// Focal length withheld: the image-plane answers (the focal length then comes from a
+// second vanishing point where the camera is turned, f-h, else a default).
+const std::map<std::string, Measured> kFocalWithheld = {
+    {"corridor_a", {0.109, 0.129, 0.183, 0.141, 0, 0, 0}}, {"corridor_b", {0.359, 0.497, 0.338, 0.281, 0, 0, 0}},
+    {"corridor_c", {0.161, 0.282, 0.276, 0.404, 0, 0, 0}}, {"corridor_d", {0.136, 0.339, 0.934, 0.096, 0, 0, 0}},
+    {"corridor_e", {0.217, 0.252, 0.266, 0.054, 0, 0, 0}}, {"corridor_f", {0.093, 0.139, 0.380, 0.028, 0, 0, 0}},
+    {"corridor_g", {0.113, 0.161, 0.081, 0.199, 0, 0, 0}}, {"corridor_h", {0.144, 0.189, 0.246, 0.346, 0, 0, 0}},
+};
 
 struct Row {
   double farMedianPx = 0, farMaxPx = 0, nearMedianPx = 0, vpPx = 0;
@@ -71,7 +105,7 @@ void printRow(const std::string& name, const Row& r) {
 
 TEST(DetectCorridors, FocalGivenMeetsIssueTargets) {
   const auto cases = testing::loadCorridorCases();
-  if (cases.empty()) GTEST_SKIP() << "../shared/corridors is not beside the checkout";
+  ASSERT_EQ(cases.size(), 8u);
   printHeader("focal length given; P5..P8 on the marked band (default)");
   for (const CorridorCase& c : cases) {
     DetectOptions options;
@@ -80,19 +114,21 @@ TEST(DetectCorridors, FocalGivenMeetsIssueTargets) {
     const Row r = evaluate(c, options);
     printRow(c.name, r);
     ASSERT_EQ(r.status.rfind("ok", 0), 0u) << c.name << ": " << r.status;
-    EXPECT_LE(r.farMedianPx, kMaxFarCornerMedianPx) << c.name;
-    EXPECT_LE(r.vpPx, kMaxVanishingPointPx) << c.name;
-    EXPECT_LE(std::abs(r.widthPct), kMaxWidthHeightPercent) << c.name;
-    EXPECT_LE(std::abs(r.heightPct), kMaxWidthHeightPercent) << c.name;
+    const Measured& m = kFocalGiven.at(c.name);
+    EXPECT_LE(r.farMedianPx, limitPx(m.farMedianPx)) << c.name;
+    EXPECT_LE(r.farMaxPx, limitPx(m.farMaxPx)) << c.name;
+    EXPECT_LE(r.vpPx, limitPx(m.vpPx)) << c.name;
+    EXPECT_LE(std::abs(r.widthPct), limitPct(m.widthPct)) << c.name;
+    EXPECT_LE(std::abs(r.heightPct), limitPct(m.heightPct)) << c.name;
     // The band marks the ground truth's near corners, so length follows too.
-    EXPECT_LE(r.nearMedianPx, 2.0) << c.name;
-    EXPECT_LE(std::abs(r.lengthPct), 2.0) << c.name;
+    EXPECT_LE(r.nearMedianPx, limitPx(m.nearMedianPx)) << c.name;
+    EXPECT_LE(std::abs(r.lengthPct), limitPct(m.lengthPct)) << c.name;
   }
 }
 
 TEST(DetectCorridors, NearCornersAtImageEdgeRule) {
   const auto cases = testing::loadCorridorCases();
-  if (cases.empty()) GTEST_SKIP() << "../shared/corridors is not beside the checkout";
+  ASSERT_EQ(cases.size(), 8u);
   printHeader("focal length given; P5..P8 at the nearest depth inside the photo (--near-at-image-edge)");
   for (const CorridorCase& c : cases) {
     DetectOptions options;
@@ -102,10 +138,13 @@ TEST(DetectCorridors, NearCornersAtImageEdgeRule) {
     const Row r = evaluate(c, options);
     printRow(c.name, r);
     ASSERT_EQ(r.status.rfind("ok", 0), 0u) << c.name << ": " << r.status;
-    // P1..P4 and so width and height do not depend on where P5..P8 go.
-    EXPECT_LE(r.farMedianPx, kMaxFarCornerMedianPx) << c.name;
-    EXPECT_LE(std::abs(r.widthPct), kMaxWidthHeightPercent) << c.name;
-    EXPECT_LE(std::abs(r.heightPct), kMaxWidthHeightPercent) << c.name;
+    // P1..P4 do not depend on where P5..P8 go; width and height move a little with
+    // the fit of all eight corners.
+    const Measured& m = kNearAtImageEdge.at(c.name);
+    EXPECT_LE(r.farMedianPx, limitPx(m.farMedianPx)) << c.name;
+    EXPECT_LE(r.farMaxPx, limitPx(m.farMaxPx)) << c.name;
+    EXPECT_LE(std::abs(r.widthPct), limitPct(m.widthPct)) << c.name;
+    EXPECT_LE(std::abs(r.heightPct), limitPct(m.heightPct)) << c.name;
     // Length is then to an arbitrary depth: nearer the camera than the band.
     EXPECT_GT(r.lengthPct, 0.0) << c.name;
   }
@@ -113,15 +152,18 @@ TEST(DetectCorridors, NearCornersAtImageEdgeRule) {
 
 TEST(DetectCorridors, FocalWithheldReport) {
   const auto cases = testing::loadCorridorCases();
-  if (cases.empty()) GTEST_SKIP() << "../shared/corridors is not beside the checkout";
+  ASSERT_EQ(cases.size(), 8u);
   printHeader("focal length withheld (a figure, not a target): these views have no second finite vanishing point");
   for (const CorridorCase& c : cases) {
     const Row r = evaluate(c, DetectOptions{});
     printRow(c.name, r);
     ASSERT_EQ(r.status.rfind("ok", 0), 0u) << c.name << ": " << r.status;
     // The image-plane answers do not need the focal length.
-    EXPECT_LE(r.farMedianPx, kMaxFarCornerMedianPx) << c.name;
-    EXPECT_LE(r.vpPx, kMaxVanishingPointPx) << c.name;
+    const Measured& m = kFocalWithheld.at(c.name);
+    EXPECT_LE(r.farMedianPx, limitPx(m.farMedianPx)) << c.name;
+    EXPECT_LE(r.farMaxPx, limitPx(m.farMaxPx)) << c.name;
+    EXPECT_LE(r.nearMedianPx, limitPx(m.nearMedianPx)) << c.name;
+    EXPECT_LE(r.vpPx, limitPx(m.vpPx)) << c.name;
   }
 }
 

@@ -1,6 +1,6 @@
 // Synthetic corridor photos with exact answers, for any camera rotation: a box
 // corridor ray-cast pixel by pixel (2x2 supersampled), tiled floor, plain walls
-// and ceiling, a far wall with a door. The shared POV-Ray scenes all look straight
+// and ceiling, a far wall with a door. The ground truth's POV-Ray scenes a-e look straight
 // down the corridor; these turn the camera.
 #pragma once
 

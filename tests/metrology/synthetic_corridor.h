@@ -1,5 +1,8 @@
 // Synthetic corridors for the metrology tests: a known box seen by a known camera,
-// projected to corners and ray-cast to a photo, so that every answer is known.
+// projected to corners and ray-cast to a photo, so that every answer is known. The
+// camera here is written from the convention corridor_frame.h states, independently
+// of the code under test (no makeCameraPose, projectToPixel or rayThroughPixel), so
+// that these tests check the convention, not only self-consistency.
 #pragma once
 
 #include <array>
@@ -21,14 +24,49 @@ struct SyntheticCorridor {
   int imageWidth = 800, imageHeight = 600;
   double focalPx = 692.82;
 
-  Intrinsics intrinsics() const { return {focalPx, {(imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5}}; }
+  Intrinsics intrinsics() const { return {focalPx, principalPointPx()}; }
+  glm::dvec2 principalPointPx() const { return {(imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5}; }
+  glm::dvec3 eyeM() const { return {cameraXM, cameraHeightM, cameraZM}; }
+
+  // Ry(yaw) Rx(pitch) Rz(roll) applied to each column of Rz(roll): the camera's right,
+  // up and back axes in the model frame. yaw > 0 turns left, pitch > 0 up.
+  std::array<glm::dvec3, 3> axes() const {
+    const double y = glm::radians(yawDeg), p = glm::radians(pitchDeg), r = glm::radians(rollDeg);
+    auto rotate = [&](glm::dvec3 v) {
+      v = {v.x, std::cos(p) * v.y - std::sin(p) * v.z, std::sin(p) * v.y + std::cos(p) * v.z};  // Rx
+      return glm::dvec3(std::cos(y) * v.x + std::sin(y) * v.z, v.y, -std::sin(y) * v.x + std::cos(y) * v.z);  // Ry
+    };
+    return {rotate({std::cos(r), std::sin(r), 0}), rotate({-std::sin(r), std::cos(r), 0}), rotate({0, 0, 1})};
+  }
   CameraPose pose() const {
-    return makeCameraPose(yawDeg, pitchDeg, rollDeg, glm::dvec3(cameraXM, cameraHeightM, cameraZM));
+    const auto [right, up, back] = axes();
+    CameraPose pose;
+    pose.worldFromCamera = glm::dmat3(right, up, back);
+    pose.positionM = eyeM();
+    pose.yawDeg = yawDeg, pose.pitchDeg = pitchDeg, pose.rollDeg = rollDeg;
+    return pose;
+  }
+  // Pinhole projection: pixel centres at integer coordinates, u right, v down.
+  glm::dvec2 project(const glm::dvec3& pointM) const {
+    const auto [right, up, back] = axes();
+    const glm::dvec3 d = pointM - eyeM();
+    const double depth = -glm::dot(d, back);
+    return principalPointPx() + focalPx * glm::dvec2(glm::dot(d, right), -glm::dot(d, up)) / depth;
+  }
+  // The unit ray from the eye through pixel `px`.
+  glm::dvec3 ray(const glm::dvec2& px) const {
+    const auto [right, up, back] = axes();
+    const glm::dvec2 c = px - principalPointPx();
+    return glm::normalize(right * c.x - up * c.y - back * focalPx);
+  }
+  // P1..P8 as corridor_frame.h lists them, written out here.
+  std::array<glm::dvec3, kCornerCount> cornersM() const {
+    const double w = widthM / 2, h = heightM, l = lengthM;
+    return {glm::dvec3(-w, h, -l), {w, h, -l}, {-w, 0, -l}, {w, 0, -l}, {-w, 0, 0}, {w, 0, 0}, {-w, h, 0}, {w, h, 0}};
   }
   std::array<glm::dvec2, kCornerCount> cornersPx() const {
-    const auto corners = corridorCorners(widthM, heightM, lengthM);
     std::array<glm::dvec2, kCornerCount> out{};
-    for (int i = 0; i < kCornerCount; ++i) out[i] = glm::dvec2(projectToPixel(intrinsics(), pose(), corners[i]));
+    for (int i = 0; i < kCornerCount; ++i) out[i] = project(cornersM()[i]);
     return out;
   }
   Shot shot() const {
@@ -90,8 +128,6 @@ inline Hit castRay(const SyntheticCorridor& c, const glm::dvec3& origin, const g
 inline cv::Mat renderCorridor(const SyntheticCorridor& c, const std::function<cv::Vec3d(const Hit&)>& shade,
                               int supersample = 1) {
   cv::Mat image(c.imageHeight, c.imageWidth, CV_8UC3);
-  const Intrinsics k = c.intrinsics();
-  const CameraPose pose = c.pose();
   cv::parallel_for_(cv::Range(0, c.imageHeight), [&](const cv::Range& rows) {
     for (int v = rows.start; v < rows.end; ++v) {
       for (int u = 0; u < c.imageWidth; ++u) {
@@ -99,7 +135,7 @@ inline cv::Mat renderCorridor(const SyntheticCorridor& c, const std::function<cv
         for (int j = 0; j < supersample; ++j) {
           for (int i = 0; i < supersample; ++i) {
             const glm::dvec2 px(u - 0.5 + (i + 0.5) / supersample, v - 0.5 + (j + 0.5) / supersample);
-            const Hit hit = castRay(c, pose.positionM, rayThroughPixel(k, pose.worldFromCamera, px));
+            const Hit hit = castRay(c, c.eyeM(), c.ray(px));
             sum += hit.plane < 0 ? cv::Vec3d(128, 128, 128) : shade(hit);
           }
         }

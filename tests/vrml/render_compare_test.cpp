@@ -1,5 +1,5 @@
 // photowalk's renders of VRML97 files against view3dscene's screenshots of them: the
-// samples (../shared/vrml-samples/X.wrl_screenshot.png, 1600x900) and photowalk's own
+// samples (tests/data/vrml-samples/X.wrl_screenshot.png, 1600x900) and photowalk's own
 // fixtures for nodes the samples lack (tests/data/vrml/X.wrl_screenshot.png). The
 // silhouettes of non-background pixels must overlap, as intersection over union, from
 // the same viewpoint and size. Side-by-side images go to test_output/vrml/render.
@@ -125,14 +125,14 @@ TEST(VrmlRender, RendersMatchViewerScreenshotSilhouettes) {
   }
   EXPECT_EQ((*renderer)->validationMessageCount(), 0u);
   EXPECT_GE(compared, 1);
-  if (samples == 0) std::printf("  (no shared samples in %s: only photowalk's fixtures compared)\n", PW_SHARED_DIR);
+  EXPECT_GE(samples, 1) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
 }
 
 // The command a person runs, through editor/model_io: every sample renders, with the
 // reader's warnings on stderr and nothing else.
 TEST(VrmlRender, PhotowalkRenderDrawsEverySample) {
   const auto samples = vrmlSamples();
-  if (samples.empty()) GTEST_SKIP() << "no samples in " << PW_SHARED_DIR "/vrml-samples";
+  ASSERT_FALSE(samples.empty()) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
   const fs::path outDir = fs::path(PW_BINARY_DIR) / "test_output" / "vrml" / "render_command";
   fs::create_directories(outDir);
   for (const fs::path& sample : samples) {

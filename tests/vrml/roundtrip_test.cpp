@@ -35,7 +35,7 @@ void expectRoundTrip(const Scene& original, const std::string& name) {
 
 TEST(VrmlRoundTrip, EverySampleReadsBackExactly) {
   const auto samples = vrmlSamples();
-  if (samples.empty()) GTEST_SKIP() << "no samples in " << PW_SHARED_DIR "/vrml-samples";
+  ASSERT_FALSE(samples.empty()) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
   for (const fs::path& sample : samples) {
     SCOPED_TRACE(sample.string());
     auto scene = readVrml(sample, nullptr);

@@ -1,4 +1,4 @@
-// Every VRML97 file of ../shared/vrml-samples loads, with the shapes that file draws.
+// Every VRML97 file of tests/data/vrml-samples loads, with the shapes that file draws.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -12,7 +12,7 @@ namespace {
 
 TEST(VrmlSamples, EveryVrml97SampleLoads) {
   const auto samples = vrmlSamples();
-  if (samples.empty()) GTEST_SKIP() << "no samples in " << PW_SHARED_DIR "/vrml-samples";
+  ASSERT_FALSE(samples.empty()) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
   // Shapes each file draws, counted by hand from the files (cones*: 20 and 4 Text).
   const std::map<std::string, size_t> expected = {
       {"proto_nested.wrl", 30},       {"proto_ultra_simple.wrl", 6}, {"deranged_house.wrl", 2},

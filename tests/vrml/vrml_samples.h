@@ -1,4 +1,5 @@
-// The VRML97 files of ../shared/vrml-samples (Castle Game Engine demo models), sorted.
+// The VRML97 files of tests/data/vrml-samples (Castle Game Engine demo models, GPL-2+,
+// with view3dscene's screenshots), sorted.
 #pragma once
 
 #include <algorithm>
@@ -9,11 +10,11 @@
 namespace pw::engine {
 
 // Every .wrl / .wrl.gz under the samples folder whose content is VRML97 (plain text
-// starting with "#VRML V2.0", or gzip data); empty when the folder is absent.
+// starting with "#VRML V2.0", or gzip data).
 inline std::vector<std::filesystem::path> vrmlSamples() {
   namespace fs = std::filesystem;
   std::vector<fs::path> out;
-  const fs::path root = PW_SHARED_DIR "/vrml-samples";
+  const fs::path root = PW_TEST_DATA_DIR "/vrml-samples";
   std::error_code ec;
   if (!fs::is_directory(root, ec)) return out;
   for (const auto& entry : fs::recursive_directory_iterator(root, ec)) {
