@@ -14,33 +14,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/scene/image.h"
-#include "tests/support/run_command.h"
+#include "tests/walk/walk_run.h"
 
 namespace pw::walk {
 namespace {
 namespace fs = std::filesystem;
 
 using test::CommandRun;
-CommandRun photowalk(const std::string& arguments) { return test::runCommand(std::string(PW_PHOTOWALK) + " " + arguments); }
-
-struct TraceRow {
-  long frame;
-  double x, y, z, yawDeg, pitchDeg;
-};
-
-std::vector<TraceRow> readTrace(const fs::path& path) {
-  std::vector<TraceRow> rows;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    TraceRow r{};
-    if (std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf,%lf", &r.frame, &r.x, &r.y, &r.z, &r.yawDeg, &r.pitchDeg) == 6) {
-      rows.push_back(r);
-    }
-  }
-  return rows;
-}
 
 // The sample corridor (assets/corridor.json: 4.0 x 3.5 x 19.0 m, camera 1.7 m high,
 // 6 m before the near corners), built once for all tests.
