@@ -29,7 +29,9 @@ constexpr const char* kUsage =
     "                        SCENE was built from that shot (its first corridor)\n"
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "                        (as PW_DEVICE=cpu)\n"
-    "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n";
+    "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n\n"
+    "With Vulkan validation on (PW_VALIDATION=1, or a Debug build) any validation message\n"
+    "fails the command (exit 1) and no image is written.\n";
 
 int runRender(Args& args) {
   const auto output = args.value("--output", "-o");
@@ -108,6 +110,8 @@ int runRender(Args& args) {
   if (auto uploaded = (*renderer)->setScene(*scene); !uploaded) return fail(uploaded.message());
   auto image = (*renderer)->renderToImage(camera, size.first, size.second);
   if (!image) return fail(image.message());
+  // A frame drawn while the layers objected is not trusted: nothing is written.
+  if (auto clean = (*renderer)->validationStatus(); !clean) return fail(clean.message());
   if (auto saved = engine::saveImage(*output, *image); !saved) return fail(saved.message());
   std::printf("%s: %dx%d, %s, %dx MSAA\n", output->c_str(), size.first, size.second, (*renderer)->deviceName().c_str(),
               (*renderer)->msaaSamples());

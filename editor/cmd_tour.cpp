@@ -36,7 +36,10 @@ constexpr const char* kUsage =
     "  --size WxH         frame size in pixels (default 1280x720)\n"
     "  --video OUT.mp4    also write a video (MPEG-4; .avi for Motion JPEG)\n"
     "  --fps F            video frame rate (default 30)\n"
-    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n";
+    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n\n"
+    "With Vulkan validation on (PW_VALIDATION=1, or a Debug build) any validation message\n"
+    "fails the command (exit 1): the frames drawn before it stay, later frames and the\n"
+    "video are not written.\n";
 
 // Cameras through the scene's viewpoints in turn, back to the first, eased in and out.
 std::vector<engine::Camera> viewpointTour(const engine::Scene& scene, int frames) {
@@ -201,6 +204,7 @@ int runTour(Args& args) {
   auto renderer = engine::Renderer::create(options);
   if (!renderer) return fail(renderer.message());
   if (auto uploaded = (*renderer)->setScene(*scene); !uploaded) return fail(uploaded.message());
+  if (auto clean = (*renderer)->validationStatus(); !clean) return fail(clean.message());
 
   cv::VideoWriter video;
   fs::path videoTemp;
@@ -228,6 +232,12 @@ int runTour(Args& args) {
     if (!image) {
       writer.finish();
       return abandon(image.message());
+    }
+    // Each frame is checked before it is queued, so every frame written was drawn
+    // without a validation message.
+    if (auto clean = (*renderer)->validationStatus(); !clean) {
+      writer.finish();
+      return abandon(clean.message());
     }
     if (!writer.push(i, std::move(*image))) return abandon(writer.finish());
     showProgress(i + 1, frames);

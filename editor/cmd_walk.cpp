@@ -28,7 +28,9 @@ constexpr const char* kUsage =
     "  --replay SCRIPT       play a scripted walk at a fixed 1/60 s per frame (README: Replay scripts)\n"
     "  --trace OUT.csv       write frame,x,y,z,yaw_deg,pitch_deg for every simulated frame\n"
     "  --screenshot-dir DIR  where F12 screenshots go (default: the current folder)\n"
-    "  --no-overlay          start with the overlay hidden\n";
+    "  --no-overlay          start with the overlay hidden\n\n"
+    "With Vulkan validation on (PW_VALIDATION=1, or a Debug build) any validation message\n"
+    "fails the command (exit 1) when the window closes.\n";
 
 int runWalk(Args& args) {
   WalkOptions options;

@@ -540,10 +540,7 @@ Result<WalkReport> WalkApp::run() {
     report.medianFrameMs = sorted[sorted.size() / 2];
   }
   report.validationMessages = renderer_->validationMessageCount();
-  if (renderer_->validationEnabled() && report.validationMessages > 0) {
-    for (const std::string& m : renderer_->validationMessages()) std::fprintf(stderr, "validation: %s\n", m.c_str());
-    return makeError(std::to_string(report.validationMessages) + " Vulkan validation message(s); see above");
-  }
+  PW_TRY(renderer_->validationStatus());
   return report;
 }
 

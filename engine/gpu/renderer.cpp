@@ -1,5 +1,6 @@
 #include "engine/gpu/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -13,14 +14,27 @@ namespace {
 
 constexpr uint64_t kMaxTargetBytes = uint64_t{2} << 30;  // 2 GiB of colour, depth and read-back
 
-bool validationWanted(RendererOptions::Validation v) {
-  if (v != RendererOptions::Validation::kDefault) return v == RendererOptions::Validation::kOn;
+struct ValidationChoice {
+  bool wanted = false;
+  bool required = false;  // asked for by name (kOn, PW_VALIDATION=1): a missing layer is an error
+};
+
+ValidationChoice validationChoice(RendererOptions::Validation v) {
+  if (v != RendererOptions::Validation::kDefault) {
+    const bool on = v == RendererOptions::Validation::kOn;
+    return {on, on};
+  }
+  // PW_VALIDATION=1 is how tests and CI ask for validation: running without the layer
+  // would let them pass unvalidated, so its absence is an error there too.
   const char* env = std::getenv("PW_VALIDATION");
-  if (env && *env) return std::strcmp(env, "0") != 0;
+  if (env && *env) {
+    const bool on = std::strcmp(env, "0") != 0;
+    return {on, on};
+  }
 #ifdef NDEBUG
-  return false;
+  return {false, false};
 #else
-  return true;
+  return {true, false};  // Debug builds: a missing layer is a note
 #endif
 }
 
@@ -116,8 +130,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& option
   auto impl = std::make_unique<Impl>();
   gpu::ContextOptions contextOptions;
   contextOptions.forceCpu = options.forceCpu;
-  contextOptions.validation = validationWanted(options.validation);
-  contextOptions.validationRequired = options.validation == RendererOptions::Validation::kOn;
+  const ValidationChoice validation = validationChoice(options.validation);
+  contextOptions.validation = validation.wanted;
+  contextOptions.validationRequired = validation.required;
   contextOptions.instanceExtensions = options.instanceExtensions;
   auto context = gpu::Context::create(contextOptions);
   if (!context) return context.error();
@@ -248,6 +263,16 @@ Status Renderer::submitAndWait(const std::function<void(VkCommandBuffer)>& recor
 size_t Renderer::validationMessageCount() const { return impl_->context->validationLog().count(); }
 std::vector<std::string> Renderer::validationMessages() const { return impl_->context->validationLog().messages(); }
 bool Renderer::validationEnabled() const { return impl_->context->validationEnabled(); }
+
+Status Renderer::validationStatus() const {
+  const size_t count = validationMessageCount();
+  if (count == 0) return {};
+  const std::vector<std::string> messages = validationMessages();
+  std::string first = messages.empty() ? std::string("(not kept)") : messages.front();
+  std::replace_if(first.begin(), first.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+  return makeError(std::to_string(count) + " Vulkan validation message" + (count == 1 ? "" : "s") +
+                   " (validation is on); the first: " + first);
+}
 std::string Renderer::deviceName() const { return impl_->context->properties().deviceName; }
 bool Renderer::isCpuDevice() const { return impl_->context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 int Renderer::msaaSamples() const { return static_cast<int>(impl_->samples); }

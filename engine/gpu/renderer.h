@@ -43,8 +43,9 @@ struct RendererOptions {
   // what VRML97 browsers did (Gouraud): large faces lose the pools of point and spot lights.
   std::optional<bool> perVertexLighting;
   enum class Validation { kDefault, kOn, kOff };
-  // kDefault: on in Debug builds and whenever PW_VALIDATION=1 (a missing layer is then
-  // a note, not an error); kOn: on, and a missing layer is an error (tests).
+  // kDefault: PW_VALIDATION=1 turns it on and PW_VALIDATION=0 off, a missing layer
+  // then being an error (tests, CI); unset, on in Debug builds, where a missing layer
+  // is a note. kOn: on, and a missing layer is an error (tests).
   Validation validation = Validation::kDefault;
   // Instance extensions a window needs (the caller passes GLFW's list; pw_gpu never
   // includes GLFW). With VK_KHR_surface among them the device enables VK_KHR_swapchain.
@@ -85,6 +86,11 @@ class Renderer {
   size_t validationMessageCount() const;
   std::vector<std::string> validationMessages() const;
   bool validationEnabled() const;
+  // Ok while the layers have reported nothing (always, with validation off); else an
+  // error of one line naming how many messages there were and the first. Rendering
+  // commands end their work with it, so that a run with validation on exits non-zero
+  // on any message. Messages from the renderer's own teardown come too late for it.
+  Status validationStatus() const;
 
   std::string deviceName() const;
   bool isCpuDevice() const;

@@ -53,8 +53,10 @@ TEST_F(BuiltModel, LoadsInView3dsceneAndItsPhotoViewMatchesOurs) {
   while (std::getline(logFile, line)) {
     if (line.rfind("Warning", 0) == 0 && line.find("OnInitialize") == std::string::npos) ADD_FAILURE() << line;
   }
-  const CommandRun rendered = shell(std::string(PW_PHOTOWALK) + " render " + (dir_ / "corridor.wrl").string() +
-                                    " --viewpoint Photo --size 640x360 -o " + ours.string());
+  // Validation on: render exits non-zero on any validation message.
+  const CommandRun rendered = shell("PW_VALIDATION=1 " + std::string(PW_PHOTOWALK) + " render " +
+                                    (dir_ / "corridor.wrl").string() + " --viewpoint Photo --size 640x360 -o " +
+                                    ours.string());
   ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
   const cv::Mat a = cv::imread(shot.string()), b = cv::imread(ours.string());
   ASSERT_FALSE(a.empty());

@@ -129,7 +129,8 @@ TEST(VrmlRender, RendersMatchViewerScreenshotSilhouettes) {
 }
 
 // The command a person runs, through editor/model_io: every sample renders, with the
-// reader's warnings on stderr and nothing else.
+// reader's warnings on stderr and nothing else. Validation is on: render exits non-zero
+// on any validation message.
 TEST(VrmlRender, PhotowalkRenderDrawsEverySample) {
   const auto samples = vrmlSamples();
   ASSERT_FALSE(samples.empty()) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
@@ -139,8 +140,8 @@ TEST(VrmlRender, PhotowalkRenderDrawsEverySample) {
     SCOPED_TRACE(sample.string());
     const fs::path out = outDir / (sample.filename().string() + ".png");
     fs::remove(out);
-    const std::string command = std::string("'") + PW_PHOTOWALK + "' render '" + sample.string() + "' -o '" +
-                                out.string() + "' --size 320x180 --cpu > '" + out.string() + ".log' 2>&1";
+    const std::string command = std::string("PW_VALIDATION=1 '") + PW_PHOTOWALK + "' render '" + sample.string() +
+                                "' -o '" + out.string() + "' --size 320x180 --cpu > '" + out.string() + ".log' 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     auto image = loadImage(out);
     ASSERT_TRUE(image.ok()) << image.message();
