@@ -116,6 +116,15 @@ engine::Image mirroredLeftRight(const engine::Image& image) {
   return out;
 }
 
+engine::Image upsideDown(const engine::Image& image) {
+  engine::Image out = image;
+  const size_t row = static_cast<size_t>(image.width) * 4;
+  for (int y = 0; y < image.height; ++y) {
+    std::copy_n(image.rgba.data() + (image.height - 1 - y) * row, row, out.rgba.data() + y * row);
+  }
+  return out;
+}
+
 engine::Image differenceImage(const engine::Image& actual, const engine::Image& expected) {
   engine::Image out = engine::makeImage(actual.width * 2, actual.height);
   if (actual.width != expected.width || actual.height != expected.height) return out;

@@ -56,8 +56,10 @@ struct TileDifference {
 TileDifference compareTiles(const engine::Image& actual, const engine::Image& expected, int columns, int rows,
                             TileGain gain = TileGain::kNone);
 
-// The image mirrored left to right: what a comparison that sees layout must reject.
+// The image mirrored left to right, and turned upside down (mirrored top to bottom):
+// what a comparison that sees layout must reject.
 engine::Image mirroredLeftRight(const engine::Image& image);
+engine::Image upsideDown(const engine::Image& image);
 
 // Compares `actual` with PW_GOLDEN_DIR/NAME.png. On failure writes NAME_actual.png and
 // NAME_diff.png under PW_BINARY_DIR/test-output and returns a message naming them;

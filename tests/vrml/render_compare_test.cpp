@@ -63,7 +63,9 @@ Image sideBySide(const Image& reference, const Image& ours, const std::vector<bo
 }
 
 // Lowest overlap accepted per sample, below the measured value by a margin; the notes
-// say what photowalk draws differently.
+// say what photowalk draws differently. minIou 0: the file shows nothing from its
+// default view, and both frames must be empty (an IoU of two empty frames proves
+// nothing, so it is not asked for).
 struct Expectation {
   double minIou;
   const char* why;
@@ -74,9 +76,13 @@ const std::map<std::string, Expectation> kExpected = {
     {"cones_gzipped_but_with_normal_extension.wrl",
      {0.35, "as cones.wrl (its longer Text widens the bounding box, so the default camera moves back)"}},
     {"reuse_coordinate.wrl", {0.45, "its third shape is a PointSet: 1-pixel points against large squares"}},
-    {"pointset.wrl", {0.99, "both frames are empty: the two points lie outside the default view"}},
+    {"pointset.wrl", {0.0, "both frames must be empty: the two points lie outside the default view"}},
 };
 constexpr double kDefaultMinIou = 0.95;
+// Each silhouette covers at least this fraction of the frame (smallest measured: 0.0155,
+// photowalk's cones_gzipped_but_with_normal_extension.wrl; 0.037 without 1-pixel
+// points), so that a blank or nearly blank frame on either side fails.
+constexpr double kMinCoverage = 0.01;
 
 // Files with a view3dscene screenshot beside them.
 std::vector<fs::path> filesWithScreenshots() {
@@ -116,9 +122,16 @@ TEST(VrmlRender, RendersMatchViewerScreenshotSilhouettes) {
     const double iou = intersectionOverUnion(a, b);
     auto expected = kExpected.find(name);
     const double minIou = expected == kExpected.end() ? kDefaultMinIou : expected->second.minIou;
-    std::printf("  %-46s IoU %.3f (at least %.2f)%s%s\n", name.c_str(), iou, minIou,
-                expected == kExpected.end() ? "" : ": ", expected == kExpected.end() ? "" : expected->second.why);
-    EXPECT_GE(iou, minIou);
+    std::printf("  %-46s IoU %.3f (at least %.2f), coverage %.4f / %.4f%s%s\n", name.c_str(), iou, minIou, coverage(a),
+                coverage(b), expected == kExpected.end() ? "" : ": ", expected == kExpected.end() ? "" : expected->second.why);
+    if (minIou == 0.0) {
+      EXPECT_EQ(coverage(a), 0.0) << "view3dscene's screenshot is expected to be empty";
+      EXPECT_EQ(coverage(b), 0.0) << "photowalk's frame is expected to be empty";
+    } else {
+      EXPECT_GE(coverage(a), kMinCoverage) << "view3dscene's screenshot shows (almost) nothing";
+      EXPECT_GE(coverage(b), kMinCoverage) << "photowalk drew (almost) nothing";
+      EXPECT_GE(iou, minIou);
+    }
     EXPECT_TRUE(saveImage(outDir / (name + "_compare.png"), sideBySide(*reference, *ours, a, b)).ok());
     ++compared;
     samples += file.string().find("vrml-samples") != std::string::npos;

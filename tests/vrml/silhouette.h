@@ -25,14 +25,22 @@ inline std::vector<bool> silhouette(const Image& image, int tolerance) {
   return mask;
 }
 
-// |A and B| / |A or B|; 1 when both are empty.
+// |A and B| / |A or B|; 0 when both are empty: two empty frames are no evidence that
+// two renderers agree (nothing was drawn, or both drew outside the view).
 inline double intersectionOverUnion(const std::vector<bool>& a, const std::vector<bool>& b) {
   size_t both = 0, either = 0;
   for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
     both += a[i] && b[i];
     either += a[i] || b[i];
   }
-  return either ? double(both) / double(either) : 1.0;
+  return either ? double(both) / double(either) : 0.0;
+}
+
+// The fraction of the frame a mask covers, 0 to 1.
+inline double coverage(const std::vector<bool>& mask) {
+  size_t set = 0;
+  for (const bool b : mask) set += b;
+  return mask.empty() ? 0.0 : double(set) / double(mask.size());
 }
 
 }  // namespace pw::engine
