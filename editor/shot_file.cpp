@@ -126,7 +126,7 @@ Result<metrology::Shot> readShotFile(const fs::path& path) {
     auto sensor = number(doc, "sensor_width_mm", where);
     if (!sensor) return sensor.error();
     if (*mm <= 0 || *sensor <= 0) return makeError(where + ": focal_mm and sensor_width_mm must be positive");
-    shot.focalOverSensorWidth = *mm / *sensor;
+    shot.focalMm = metrology::FocalLengthMm{*mm, *sensor};
   } else {
     return makeError(where + ": missing field \"focal_px\" (or \"focal_mm\" with \"sensor_width_mm\")");
   }
@@ -222,7 +222,7 @@ Result<LoadedShot> loadShot(const fs::path& path) {
   }
   s.imageWidth = loaded.image.cols;
   s.imageHeight = loaded.image.rows;
-  if (s.focalOverSensorWidth) s.focalPx = *s.focalOverSensorWidth * s.imageWidth;
+  if (s.focalMm) s.focalPx = s.focalMm->pixels(s.imageWidth);
   for (int i = 0; i < kCornerCount; ++i) {
     const glm::dvec2 p = s.cornersPx[i];
     if (p.x < -s.imageWidth || p.x > 2.0 * s.imageWidth || p.y < -s.imageHeight || p.y > 2.0 * s.imageHeight) {
@@ -241,7 +241,12 @@ Status writeShotFile(const fs::path& path, const metrology::Shot& shot) {
   fs::path relative = fs::relative(fs::absolute(image, ec), fs::absolute(base, ec), ec);
   doc["image"] = (!ec && !relative.empty()) ? relative.generic_string() : image.generic_string();
   if (shot.imageWidth > 0) doc["image_size"] = {shot.imageWidth, shot.imageHeight};
-  doc["focal_px"] = shot.focalPx;
+  if (shot.focalMm) {
+    doc["focal_mm"] = shot.focalMm->focalMm;
+    doc["sensor_width_mm"] = shot.focalMm->sensorWidthMm;
+  } else {
+    doc["focal_px"] = shot.focalPx;
+  }
   if (shot.principalPointPx) doc["principal_point"] = {shot.principalPointPx->x, shot.principalPointPx->y};
   if (shot.cameraHeightM) doc["camera_height_m"] = *shot.cameraHeightM;
   json corners = json::object();

@@ -26,7 +26,8 @@ struct LoadedShot {
 Result<LoadedShot> loadShot(const std::filesystem::path& path);
 
 // Writes a shot file atomically. The image path is written relative to the shot
-// file's folder where possible.
+// file's folder where possible; the focal length in the units it was read in
+// (focal_mm with sensor_width_mm, or focal_px).
 Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& shot);
 
 // The measurement as one JSON object (what `photowalk measure` prints): width_m,

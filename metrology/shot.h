@@ -46,14 +46,21 @@ struct ReferenceLength {
   double lengthM = 0;
 };
 
+struct FocalLengthMm {
+  double focalMm = 0;
+  double sensorWidthMm = 0;
+  double pixels(int imageWidth) const { return focalMm / sensorWidthMm * imageWidth; }
+};
+
 struct Shot {
   std::string imagePath;  // as resolved for opening (relative to the shot file's folder)
   int imageWidth = 0;     // filled from the image when it is loaded
   int imageHeight = 0;
   double focalPx = 0;
-  // Set instead of focalPx when the file gives focal_mm and sensor_width_mm:
-  // focalPx = focalOverSensorWidth * imageWidth once the image is known.
-  std::optional<double> focalOverSensorWidth;
+  // The focal length as the user gave it, in millimetres with the sensor's width: then
+  // focalPx = focalMm / sensorWidthMm * imageWidth once the image is known (shot files
+  // keep it in these units when written back).
+  std::optional<FocalLengthMm> focalMm;
   std::optional<glm::dvec2> principalPointPx;  // default: ((w-1)/2, (h-1)/2)
   std::optional<double> cameraHeightM;
   std::array<glm::dvec2, kCornerCount> cornersPx{};

@@ -104,7 +104,7 @@ Result<Intrinsics> shotIntrinsics(const Shot& shot) {
   if (shot.imageWidth <= 0 || shot.imageHeight <= 0) return makeError("the image has no pixels (zero size)");
   Intrinsics k;
   k.focalPx = shot.focalPx;
-  if (!(k.focalPx > 0) && shot.focalOverSensorWidth) k.focalPx = *shot.focalOverSensorWidth * shot.imageWidth;
+  if (!(k.focalPx > 0) && shot.focalMm) k.focalPx = shot.focalMm->pixels(shot.imageWidth);
   if (!std::isfinite(k.focalPx) || !(k.focalPx > 0)) return makeError("the focal length must be a positive number");
   k.principalPointPx = shot.principalPoint();
   if (!finite(k.principalPointPx)) return makeError("the principal point is not finite");

@@ -176,7 +176,7 @@ TEST(Measure, FocalFromMillimetres) {
   SyntheticCorridor c;
   Shot shot = c.shot();
   shot.focalPx = 0;
-  shot.focalOverSensorWidth = c.focalPx / c.imageWidth;
+  shot.focalMm = FocalLengthMm{c.focalPx / c.imageWidth * 36.0, 36.0};
   auto m = measureCorridor(shot);
   ASSERT_TRUE(m.ok()) << m.message();
   expectRecovers(c, *m, 1e-7);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "editor/shot_file.h"
@@ -96,6 +97,23 @@ TEST_F(ShotFile, WriteThenReadGivesTheSameShot) {
   ASSERT_TRUE(again.ok()) << again.message();
   EXPECT_EQ(again->shot.imagePath, loaded->shot.imagePath);
   for (int i = 0; i < metrology::kCornerCount; ++i) EXPECT_EQ(again->shot.cornersPx[i], loaded->shot.cornersPx[i]);
+}
+
+// A focal length given in millimetres stays in millimetres (with the sensor width)
+// when the shot is written back, and means the same number of pixels.
+TEST_F(ShotFile, FocalInMillimetresSurvivesAWrite) {
+  auto loaded = loadShot(write("mm.json", shot("", "\"focal_mm\": 24, \"sensor_width_mm\": 36")));
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  ASSERT_TRUE(writeShotFile(dir_ / "mm_copy.json", loaded->shot).ok());
+  std::ifstream in(dir_ / "mm_copy.json");
+  const nlohmann::json written = nlohmann::json::parse(in);
+  EXPECT_EQ(written.at("focal_mm"), 24.0);
+  EXPECT_EQ(written.at("sensor_width_mm"), 36.0);
+  EXPECT_FALSE(written.contains("focal_px"));
+  auto again = loadShot(dir_ / "mm_copy.json");
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_DOUBLE_EQ(again->shot.focalPx, 24.0 / 36.0 * loaded->shot.imageWidth);
+  EXPECT_DOUBLE_EQ(again->shot.focalPx, loaded->shot.focalPx);
 }
 
 }  // namespace
