@@ -82,7 +82,12 @@ int runBuild(Args& args) {
   if (gltfPath) {
     if (auto written = engine::writeGltf(model->scene, *gltfPath); !written) return fail(written.message());
   }
-  if (auto written = engine::writeVrml(model->scene, *output, vrmlOptions); !written) return fail(written.message());
+  if (auto written = engine::writeVrml(model->scene, *output, vrmlOptions); !written) {
+    // No half of a model: the glTF written a moment ago goes too.
+    std::error_code ec;
+    if (gltfPath) fs::remove(*gltfPath, ec);
+    return fail(written.message());
+  }
 
   for (const modeling::CorridorModel& corridor : model->corridors) {
     const auto& m = corridor.measurement;

@@ -505,13 +505,29 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
   }
   auto text = vrmlText(scene, options, urls);
   if (!text) return makeError(out.string() + ": " + text.message());
-  for (const auto& [image, file] : urls) {
-    PW_TRY(saveImage(out.parent_path() / file, *image));
+  if (gz) {
+    auto compressed = gzipCompress(*text);
+    if (!compressed) return makeError(out.string() + ": " + compressed.message());
+    text = std::move(*compressed);
   }
-  if (!gz) return writeFileAtomic(out, *text);
-  auto compressed = gzipCompress(*text);
-  if (!compressed) return makeError(out.string() + ": " + compressed.message());
-  return writeFileAtomic(out, *compressed);
+  // The textures go first, the model that names them last. When a texture or the model
+  // cannot be written, the textures this call created are removed again, so that a
+  // failed write leaves no part of a model behind (one that was there before stays).
+  std::vector<fs::path> created;
+  const auto undo = [&](Status failed) {
+    std::error_code ec;
+    for (const fs::path& path : created) fs::remove(path, ec);
+    return failed;
+  };
+  for (const auto& [image, file] : urls) {
+    const fs::path path = out.parent_path() / file;
+    std::error_code ec;
+    const bool existed = fs::exists(path, ec);
+    if (Status saved = saveImage(path, *image); !saved) return undo(saved);
+    if (!existed) created.push_back(path);
+  }
+  if (Status written = writeFileAtomic(out, *text); !written) return undo(written);
+  return {};
 }
 
 }  // namespace pw::engine

@@ -24,25 +24,12 @@
 #include "engine/vrml/vrml_writer.h"
 #include "engine/gpu/renderer.h"
 #include "tests/support/groundtruth.h"
+#include "tests/support/reprojection_mask.h"
 
 namespace pw::editor {
 namespace {
 namespace fs = std::filesystem;
 using metrology::kCornerCount;
-
-double psnr(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
-  cv::Mat diff;
-  cv::absdiff(a, b, diff);
-  diff.convertTo(diff, CV_64FC3);
-  diff = diff.mul(diff);
-  diff.setTo(cv::Scalar::all(0), ~mask);
-  const cv::Scalar sum = cv::sum(diff);
-  const double n = 3.0 * cv::countNonZero(mask);
-  const double mse = (sum[0] + sum[1] + sum[2]) / n;
-  return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 99.0;
-}
-
-cv::Point2d px(const metrology::Shot& shot, int corner) { return {shot.cornersPx[corner].x, shot.cornersPx[corner].y}; }
 
 struct Psnr {
   double inner = 0;      // without 3 px each side of plane edges
@@ -68,24 +55,10 @@ Psnr reprojection(const engine::Scene& scene, const BuiltModel& built, const met
   cv::Mat rendered(image->height, image->width, CV_8UC4, image->rgba.data()), renderedBgr;
   cv::cvtColor(rendered, renderedBgr, cv::COLOR_RGBA2BGR);
 
-  // Inside P5-P6-P8-P7, less 3 px each side of every plane edge.
-  cv::Mat quad = cv::Mat::zeros(photo.size(), CV_8U);
-  // Fill at 1/16 px precision so the mask follows the corners, not their rounding.
-  std::vector<cv::Point> fine;
-  for (int c : {metrology::P5, metrology::P6, metrology::P8, metrology::P7}) {
-    fine.emplace_back(cvRound(px(shot, c).x * 16), cvRound(px(shot, c).y * 16));
-  }
-  cv::fillConvexPoly(quad, fine, 255, cv::LINE_8, 4);
-  cv::Mat interior = quad.clone();
-  const int edges[][2] = {{metrology::P1, metrology::P2}, {metrology::P2, metrology::P4}, {metrology::P4, metrology::P3},
-                          {metrology::P3, metrology::P1}, {metrology::P7, metrology::P1}, {metrology::P8, metrology::P2},
-                          {metrology::P5, metrology::P3}, {metrology::P6, metrology::P4}, {metrology::P5, metrology::P6},
-                          {metrology::P6, metrology::P8}, {metrology::P8, metrology::P7}, {metrology::P7, metrology::P5}};
-  for (const auto& e : edges) {
-    cv::line(interior, cv::Point(cvRound(px(shot, e[0]).x * 16), cvRound(px(shot, e[0]).y * 16)),
-             cv::Point(cvRound(px(shot, e[1]).x * 16), cvRound(px(shot, e[1]).y * 16)), 0, 7, cv::LINE_8, 4);
-  }
-  const Psnr result{psnr(renderedBgr, photo, interior), psnr(renderedBgr, photo, quad)};
+  // Inside P5-P6-P8-P7, less 3 px each side of every plane edge, and with them.
+  const cv::Mat interior = test::corridorMask(shot.cornersPx, photo.size(), 3);
+  const cv::Mat quad = test::corridorMask(shot.cornersPx, photo.size(), 0);
+  const Psnr result{test::maskedPsnr(renderedBgr, photo, interior), test::maskedPsnr(renderedBgr, photo, quad)};
   std::printf("[reprojection] %-16s PSNR %.2f dB without plane edges, %.2f dB with them (%d px)\n", label.c_str(),
               result.inner, result.withEdges, cv::countNonZero(interior));
   const fs::path outDir = fs::path(PW_BINARY_DIR) / "test-output";
