@@ -16,8 +16,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "bench/bench_timing.h"
-#include "editor/pipeline.h"
-#include "editor/shot_file.h"
+#include "modeling/pipeline.h"
+#include "modeling/shot_file.h"
 #include "engine/vrml/vrml_writer.h"
 
 namespace {
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   fs::create_directories(dir);
 
   // The 12 MP shot.
-  auto shot = pw::editor::readShotFile(fs::path(PW_SOURCE_DIR) / "assets/corridor.json");
+  auto shot = pw::modeling::readShotFile(fs::path(PW_SOURCE_DIR) / "assets/corridor.json");
   if (!shot) return std::fprintf(stderr, "%s\n", shot.message().c_str()), 1;
   const cv::Mat small = cv::imread(shot->imagePath);
   const double scale = 4619.0 / small.cols;
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   bigShot.focalPx *= scale;
   if (bigShot.principalPointPx) bigShot.principalPointPx = (*bigShot.principalPointPx + 0.5) * scale - 0.5;
   for (auto& c : bigShot.cornersPx) c = (c + 0.5) * scale - 0.5;
-  if (auto w = pw::editor::writeShotFile(dir / "big.json", bigShot); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
+  if (auto w = pw::modeling::writeShotFile(dir / "big.json", bigShot); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
   std::printf("photo: %dx%d (%.1f MP)\n", big.cols, big.rows, big.total() / 1e6);
 
   std::vector<double> readMs, buildMs, writeMs;
@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
     readMs.push_back(msSince(t));
 
     t = Clock::now();
-    auto model = pw::editor::buildModel(pw::modeling::chainLayout({dir / "big.json"}), {});
+    auto model = pw::modeling::buildModel(pw::modeling::chainLayout({dir / "big.json"}), {});
     buildMs.push_back(msSince(t));
     if (!model) return std::fprintf(stderr, "%s\n", model.message().c_str()), 1;
 

@@ -1,5 +1,5 @@
 // photowalk: one photo of a corridor to a true-scale 3D model you can walk through.
-// main() only dispatches to the subcommands (editor/cmd_*.cpp).
+// main() only dispatches to the subcommands (editor/cli/cmd_*.cpp).
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "editor/command.h"
+#include "editor/cli/command.h"
 
 namespace {
 

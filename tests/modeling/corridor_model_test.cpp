@@ -1,4 +1,4 @@
-#include "editor/modeling/corridor_model.h"
+#include "modeling/corridor_model.h"
 
 #include <gtest/gtest.h>
 

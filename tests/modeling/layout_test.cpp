@@ -1,4 +1,4 @@
-#include "editor/modeling/layout.h"
+#include "modeling/layout.h"
 
 #include <gtest/gtest.h>
 

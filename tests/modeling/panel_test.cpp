@@ -1,8 +1,8 @@
-#include "editor/modeling/panel.h"
+#include "modeling/panel.h"
 
 #include <gtest/gtest.h>
 
-#include "editor/modeling/corridor_frame.h"
+#include "modeling/surfaces.h"
 #include "engine/scene/collision.h"
 
 namespace pw::modeling {

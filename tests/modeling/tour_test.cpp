@@ -1,4 +1,4 @@
-#include "editor/modeling/tour.h"
+#include "modeling/tour.h"
 
 #include <gtest/gtest.h>
 

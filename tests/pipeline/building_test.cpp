@@ -6,12 +6,12 @@
 #include <map>
 #include <string>
 
-#include "editor/pipeline.h"
+#include "modeling/pipeline.h"
 #include "engine/gpu/renderer.h"
 #include "engine/scene/collision.h"
 #include "tests/support/groundtruth.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 namespace {
 namespace fs = std::filesystem;
 
@@ -20,7 +20,7 @@ fs::path shot(const char* name) { return groundtruth::groundTruthShot(name); }
 glm::vec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::vec3(m * glm::dvec4(p, 1.0)); }
 
 TEST(Building, TwoCorridorsEndToEndOpenIntoEachOther) {
-  auto built = buildModel(modeling::chainLayout({shot("corridor_a"), shot("corridor_c")}), {});
+  auto built = modeling::buildModel(modeling::chainLayout({shot("corridor_a"), shot("corridor_c")}), {});
   ASSERT_TRUE(built.ok()) << built.message();
   const auto world = engine::CollisionWorld::fromScene(built->scene);
   const auto& plan = built->plan;
@@ -41,7 +41,7 @@ TEST(Building, ThreeCorridorsWithASideWingRenderAndOpen) {
   modeling::Layout layout = modeling::chainLayout({shot("corridor_b"), shot("corridor_c"), shot("corridor_a")});
   layout.corridors[1].attach = modeling::Attachment{0, modeling::Side::kLeft, 6.0};   // a wing off b's left wall
   layout.corridors[2].attach = modeling::Attachment{0, modeling::Side::kFar, 0.0};    // a continues b
-  auto built = buildModel(layout, {});
+  auto built = modeling::buildModel(layout, {});
   ASSERT_TRUE(built.ok()) << built.message();
   const auto world = engine::CollisionWorld::fromScene(built->scene);
   const auto& plan = built->plan;
@@ -85,4 +85,4 @@ TEST(Building, ThreeCorridorsWithASideWingRenderAndOpen) {
 }
 
 }  // namespace
-}  // namespace pw::editor
+}  // namespace pw::modeling

@@ -330,7 +330,7 @@ TEST(BuildCommand, SeveralShotsAreJoinedEndToEnd) {
 // the headlight; without it the model is photo-lit: no Material, no light, headlight
 // off (README, the build row). The lamps: one per 4 m of corridor, rounded, at least
 // one, evenly spaced on the centre line 0.25 m below the ceiling
-// (editor/modeling/corridor_model.cpp).
+// (modeling/corridor_model.cpp).
 TEST(BuildCommand, LitAddsMaterialsCeilingLightsAndTheHeadlight) {
   const GroundTruth a = loadGroundTruth("corridor_a"), c = loadGroundTruth("corridor_c");
   const fs::path dir = freshDir("lit");

@@ -18,15 +18,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "editor/model_io.h"
-#include "editor/pipeline.h"
+#include "engine/io/model_io.h"
+#include "modeling/pipeline.h"
 #include "engine/gltf/gltf_writer.h"
 #include "engine/vrml/vrml_writer.h"
 #include "engine/gpu/renderer.h"
 #include "tests/support/groundtruth.h"
 #include "tests/support/reprojection_mask.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 namespace {
 namespace fs = std::filesystem;
 using metrology::kCornerCount;
@@ -82,9 +82,9 @@ class Reprojection : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Reprojection, RenderFromThePhotosCameraGivesThePhotoBack) {
   const fs::path shotPath = groundtruth::groundTruthShot(GetParam());
-  auto built = buildModel(modeling::chainLayout({shotPath}), {});
+  auto built = modeling::buildModel(modeling::chainLayout({shotPath}), {});
   ASSERT_TRUE(built.ok()) << built.message();
-  auto measured = measureShotFile(shotPath);
+  auto measured = modeling::measureShotFile(shotPath);
   ASSERT_TRUE(measured.ok());
   const Psnr result = reprojection(built->scene, *built, measured->loaded.shot, measured->loaded.image, GetParam());
   EXPECT_GE(result.inner, kMeasured.at(GetParam()).inner - kMarginDb);
@@ -96,9 +96,9 @@ TEST_P(Reprojection, RenderFromThePhotosCameraGivesThePhotoBack) {
 // built in memory, from VRML and from glTF.
 TEST(ReprojectionThroughFiles, WrittenModelsRenderAsSharplyAsTheBuiltOne) {
   const fs::path shotPath = groundtruth::groundTruthShot("corridor_d");
-  auto built = buildModel(modeling::chainLayout({shotPath}), {});
+  auto built = modeling::buildModel(modeling::chainLayout({shotPath}), {});
   ASSERT_TRUE(built.ok()) << built.message();
-  auto measured = measureShotFile(shotPath);
+  auto measured = modeling::measureShotFile(shotPath);
   ASSERT_TRUE(measured.ok());
   const fs::path dir = fs::path(PW_BINARY_DIR) / "test-output" / "reprojection_files";
   fs::remove_all(dir);
@@ -108,7 +108,7 @@ TEST(ReprojectionThroughFiles, WrittenModelsRenderAsSharplyAsTheBuiltOne) {
   const Psnr inMemory = reprojection(built->scene, *built, measured->loaded.shot, measured->loaded.image, "d_in_memory");
   for (const char* file : {"d.wrl", "d.glb"}) {
     std::vector<std::string> warnings;
-    auto scene = loadModel(dir / file, &warnings);
+    auto scene = engine::loadModel(dir / file, &warnings);
     ASSERT_TRUE(scene.ok()) << scene.message();
     EXPECT_TRUE(warnings.empty()) << warnings.front();
     int withSource = 0;
@@ -127,4 +127,4 @@ INSTANTIATE_TEST_SUITE_P(Corridors, Reprojection,
                          [](const auto& info) { return info.param; });
 
 }  // namespace
-}  // namespace pw::editor
+}  // namespace pw::modeling

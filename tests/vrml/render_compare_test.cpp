@@ -141,7 +141,7 @@ TEST(VrmlRender, RendersMatchViewerScreenshotSilhouettes) {
   EXPECT_GE(samples, 1) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
 }
 
-// The command a person runs, through editor/model_io: every sample renders, with the
+// The command a person runs, through engine/io/model_io: every sample renders, with the
 // reader's warnings on stderr and nothing else. Validation is on: render exits non-zero
 // on any validation message.
 TEST(VrmlRender, PhotowalkRenderDrawsEverySample) {

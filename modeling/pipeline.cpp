@@ -1,10 +1,10 @@
-#include "editor/pipeline.h"
+#include "modeling/pipeline.h"
 
 #include <algorithm>
 
-#include "editor/modeling/tour.h"
+#include "modeling/tour.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 
 Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options) {
   auto loaded = loadShot(path);
@@ -43,4 +43,4 @@ Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::Mo
   return model;
 }
 
-}  // namespace pw::editor
+}  // namespace pw::modeling

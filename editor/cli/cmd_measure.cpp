@@ -5,8 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
-#include "editor/command.h"
-#include "editor/shot_file.h"
+#include "editor/cli/command.h"
+#include "modeling/shot_file.h"
 #include "metrology/measure.h"
 #include "metrology/sheet.h"
 
@@ -60,11 +60,11 @@ int runMeasure(Args& args) {
   if (positionals.size() != 1) return fail("measure takes one shot file; see photowalk measure --help");
   const std::string& shotPath = positionals[0];
 
-  auto loaded = loadShot(shotPath);
+  auto loaded = modeling::loadShot(shotPath);
   if (!loaded) return fail(loaded.message());
   auto measurement = metrology::measureCorridor(loaded->shot, *options);
   if (!measurement) return fail(shotPath + ": " + measurement.message());
-  auto text = measurementJson(*measurement);
+  auto text = modeling::measurementJson(*measurement);
   if (!text) return fail(shotPath + ": " + text.message());
 
   if (sheetPath) {

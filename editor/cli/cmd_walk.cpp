@@ -2,8 +2,8 @@
 #include <cstdio>
 #include <string>
 
-#include "editor/command.h"
-#include "editor/model_io.h"
+#include "editor/cli/command.h"
+#include "engine/io/model_io.h"
 #include "editor/walk_window.h"
 
 namespace pw::editor {
@@ -73,7 +73,7 @@ int runWalk(Args& args) {
   if (screenshotDir) options.screenshotDir = *screenshotDir;
 
   std::vector<std::string> warnings;
-  auto scene = loadModel(positionals[0], &warnings);
+  auto scene = engine::loadModel(positionals[0], &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (!scene) return fail(scene.message());
   options.title = "photowalk - " + (scene->title.empty() ? positionals[0] : scene->title);

@@ -11,7 +11,7 @@
 #include "metrology/measure.h"
 #include "metrology/shot.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 
 // Parses the shot file and checks every number is present, finite and sensible.
 // Does not open the image; `shot.imagePath` is resolved against the file's folder.
@@ -37,4 +37,4 @@ Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& s
 // rather than print a NaN or infinity.
 Result<std::string> measurementJson(const metrology::Measurement& measurement);
 
-}  // namespace pw::editor
+}  // namespace pw::modeling

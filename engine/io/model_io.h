@@ -8,7 +8,7 @@
 #include "base/result.h"
 #include "engine/scene/scene.h"
 
-namespace pw::editor {
+namespace pw::engine {
 
 // The name of the built-in sample room (engine/scene/sample_scene.h).
 inline constexpr const char* kSampleSceneName = "sample";
@@ -16,6 +16,6 @@ inline constexpr const char* kSampleSceneName = "sample";
 // Loads `path` as a scene: "sample" is the built-in room; other files by their format.
 // Non-fatal problems (an ignored node, a texture that fell back to a colour) are
 // appended to `warnings` (may be null) as one-line messages.
-Result<engine::Scene> loadModel(const std::filesystem::path& path, std::vector<std::string>* warnings);
+Result<Scene> loadModel(const std::filesystem::path& path, std::vector<std::string>* warnings);
 
-}  // namespace pw::editor
+}  // namespace pw::engine

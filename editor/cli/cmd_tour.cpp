@@ -16,9 +16,9 @@
 #include <opencv2/videoio.hpp>
 
 #include "base/atomic_file.h"
-#include "editor/command.h"
-#include "editor/model_io.h"
-#include "editor/modeling/tour.h"
+#include "editor/cli/command.h"
+#include "engine/io/model_io.h"
+#include "modeling/tour.h"
 #include "engine/gpu/renderer.h"
 
 namespace pw::editor {
@@ -184,7 +184,7 @@ int runTour(Args& args) {
   }
 
   std::vector<std::string> warnings;
-  auto scene = loadModel(positionals[0], &warnings);
+  auto scene = engine::loadModel(positionals[0], &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (!scene) return fail(scene.message());
 

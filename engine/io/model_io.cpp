@@ -1,4 +1,4 @@
-#include "editor/model_io.h"
+#include "engine/io/model_io.h"
 
 #include <system_error>
 
@@ -6,7 +6,7 @@
 #include "engine/gltf/gltf_reader.h"
 #include "engine/vrml/vrml_reader.h"
 
-namespace pw::editor {
+namespace pw::engine {
 
 Result<engine::Scene> loadModel(const std::filesystem::path& path, std::vector<std::string>* warnings) {
   if (path == kSampleSceneName) return engine::makeSampleScene();
@@ -33,4 +33,4 @@ Result<engine::Scene> loadModel(const std::filesystem::path& path, std::vector<s
                    ": photowalk reads VRML97 (.wrl, .wrl.gz) and glTF 2.0 (.glb, .gltf)");
 }
 
-}  // namespace pw::editor
+}  // namespace pw::engine

@@ -1,4 +1,4 @@
-#include "editor/modeling/corridor_frame.h"
+#include "modeling/surfaces.h"
 
 namespace pw::modeling {
 

@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "base/result.h"
-#include "editor/modeling/corridor_model.h"
-#include "editor/modeling/layout.h"
-#include "editor/shot_file.h"
+#include "modeling/corridor_model.h"
+#include "modeling/layout.h"
+#include "modeling/shot_file.h"
 #include "metrology/measure.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 
 struct MeasuredShot {
   LoadedShot loaded;
@@ -23,15 +23,15 @@ struct MeasuredShot {
 Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options = {});
 
 struct BuiltModel {
-  modeling::Layout layout;
-  modeling::BuildingPlan plan;
-  std::vector<modeling::CorridorModel> corridors;
+  Layout layout;
+  BuildingPlan plan;
+  std::vector<CorridorModel> corridors;
   engine::Scene scene;
 };
 
 // Measures every corridor of the layout, cuts its textures, places it, opens the
 // walls between corridors and assembles the scene. Nothing is written.
-Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,
+Result<BuiltModel> buildModel(const Layout& layout, const ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions = {});
 
-}  // namespace pw::editor
+}  // namespace pw::modeling

@@ -1,4 +1,4 @@
-#include "editor/modeling/panel.h"
+#include "modeling/panel.h"
 
 #include <algorithm>
 #include <cmath>

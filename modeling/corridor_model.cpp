@@ -1,4 +1,4 @@
-#include "editor/modeling/corridor_model.h"
+#include "modeling/corridor_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "editor/modeling/panel.h"
+#include "modeling/panel.h"
 
 namespace pw::modeling {
 namespace {

@@ -1,4 +1,4 @@
-#include "editor/shot_file.h"
+#include "modeling/shot_file.h"
 
 #include <cmath>
 #include <cstdio>
@@ -11,7 +11,7 @@
 
 #include "base/atomic_file.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using nlohmann::ordered_json;
@@ -260,9 +260,9 @@ Status writeShotFile(const fs::path& path, const metrology::Shot& shot) {
   return writeFileAtomic(path, doc.dump(1) + "\n");
 }
 
-}  // namespace pw::editor
+}  // namespace pw::modeling
 
-namespace pw::editor {
+namespace pw::modeling {
 
 namespace {
 
@@ -345,4 +345,4 @@ Result<std::string> measurementJson(const metrology::Measurement& m) {
   return out.dump(1);
 }
 
-}  // namespace pw::editor
+}  // namespace pw::modeling

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <string>
 
-#include "editor/command.h"
-#include "editor/pipeline.h"
+#include "editor/cli/command.h"
+#include "modeling/pipeline.h"
 #include "engine/gltf/gltf_writer.h"
 #include "engine/vrml/vrml_writer.h"
 
@@ -75,7 +75,7 @@ int runBuild(Args& args) {
     layout = modeling::chainLayout(std::vector<fs::path>(shots.begin(), shots.end()));
   }
 
-  auto model = buildModel(layout, options, measureOptions);
+  auto model = modeling::buildModel(layout, options, measureOptions);
   if (!model) return fail(model.message());
 
   // Everything that can fail on the input has failed by now; write the files.

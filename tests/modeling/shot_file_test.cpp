@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "editor/shot_file.h"
+#include "modeling/shot_file.h"
 
-namespace pw::editor {
+namespace pw::modeling {
 namespace {
 namespace fs = std::filesystem;
 
@@ -117,4 +117,4 @@ TEST_F(ShotFile, FocalInMillimetresSurvivesAWrite) {
 }
 
 }  // namespace
-}  // namespace pw::editor
+}  // namespace pw::modeling

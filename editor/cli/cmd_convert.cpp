@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <string>
 
-#include "editor/command.h"
-#include "editor/model_io.h"
+#include "editor/cli/command.h"
+#include "engine/io/model_io.h"
 #include "engine/gltf/gltf_writer.h"
 #include "engine/vrml/vrml_writer.h"
 
@@ -42,7 +42,7 @@ int runConvert(Args& args) {
   if (jpeg && format == Format::kGltf) return fail("--jpeg-textures is for VRML output; glTF embeds PNG textures");
 
   std::vector<std::string> warnings;
-  auto scene = loadModel(in, &warnings);
+  auto scene = engine::loadModel(in, &warnings);
   if (!quiet) {
     for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   }

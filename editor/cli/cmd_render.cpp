@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <string>
 
-#include "editor/command.h"
-#include "editor/model_io.h"
-#include "editor/modeling/corridor_model.h"
-#include "editor/pipeline.h"
+#include "editor/cli/command.h"
+#include "engine/io/model_io.h"
+#include "modeling/corridor_model.h"
+#include "modeling/pipeline.h"
 #include "engine/gpu/renderer.h"
 #include "engine/scene/camera.h"
 
@@ -58,14 +58,14 @@ int runRender(Args& args) {
     options.msaaSamples = *msaa;
   }
   std::vector<std::string> warnings;
-  auto scene = loadModel(positionals[0], &warnings);
+  auto scene = engine::loadModel(positionals[0], &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (!scene) return fail(scene.message());
   if (viewpointText && cameraFrom) return fail("give --viewpoint or --camera-from, not both");
   engine::Camera camera;
   if (cameraFrom) {
     // The shot's measured camera, placed as `build` placed its corridor (the first).
-    auto measured = measureShotFile(*cameraFrom);
+    auto measured = modeling::measureShotFile(*cameraFrom);
     if (!measured) return fail(measured.message());
     camera = modeling::photoCamera(measured->measurement, glm::dmat4(1.0));
     if (!sizeText) size = {measured->loaded.image.cols, measured->loaded.image.rows};

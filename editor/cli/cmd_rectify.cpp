@@ -9,8 +9,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
-#include "editor/command.h"
-#include "editor/shot_file.h"
+#include "editor/cli/command.h"
+#include "modeling/shot_file.h"
 #include "metrology/measure.h"
 #include "metrology/rectify.h"
 
@@ -74,7 +74,7 @@ int runRectify(Args& args) {
   }
   const std::string& shotPath = positionals[0];
 
-  auto loaded = loadShot(shotPath);
+  auto loaded = modeling::loadShot(shotPath);
   if (!loaded) return fail(loaded.message());
   auto measurement = metrology::measureCorridor(loaded->shot, measureOptions);
   if (!measurement) return fail(shotPath + ": " + measurement.message());

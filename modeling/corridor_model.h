@@ -11,7 +11,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
-#include "editor/modeling/layout.h"
+#include "modeling/layout.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/scene.h"
 #include "metrology/measure.h"

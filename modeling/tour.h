@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "editor/modeling/layout.h"
+#include "modeling/layout.h"
 #include "engine/scene/camera.h"
 
 namespace pw::modeling {

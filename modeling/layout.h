@@ -21,7 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "base/result.h"
-#include "editor/modeling/corridor_frame.h"
+#include "modeling/surfaces.h"
 
 namespace pw::modeling {
 

@@ -1,4 +1,4 @@
-#include "editor/command.h"
+#include "editor/cli/command.h"
 
 #include <charconv>
 #include <cmath>

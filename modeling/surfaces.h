@@ -5,7 +5,7 @@
 // run on towards it: `nearM` says how far (z from 0 to nearM) a surface continues.
 #pragma once
 
-#include "editor/modeling/panel.h"
+#include "modeling/panel.h"
 
 namespace pw::modeling {
 

@@ -8,8 +8,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
-#include "editor/command.h"
-#include "editor/shot_file.h"
+#include "editor/cli/command.h"
+#include "modeling/shot_file.h"
 #include "metrology/detect/detect.h"
 #include "metrology/detect/overlay.h"
 
@@ -82,7 +82,7 @@ json detectionJson(const CorridorDetection& d) {
 // object added, renamed into place only when complete.
 Status writeDetectedShot(const fs::path& path, const metrology::Shot& shot, const json& detection) {
   return writeViaTempFile(path, [&](const fs::path& temp) -> Status {
-    PW_TRY(writeShotFile(temp, shot));
+    PW_TRY(modeling::writeShotFile(temp, shot));
     auto text = readFile(temp);
     if (!text) return text.error();
     json doc = json::parse(*text, nullptr, /*allow_exceptions=*/false);
