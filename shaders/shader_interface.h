@@ -26,8 +26,9 @@ using uint = uint32_t;
 #define PW_SHADER_CONST const
 #endif
 
-// Descriptor sets: 0 per frame (camera, headlight), 1 per scene (lights, shapes),
-// 2 per texture. Macros, not constants, because GLSL layout() wants literals.
+// Descriptor sets: 0 per frame (camera, headlight: one FrameUniforms per scene view,
+// chosen by a dynamic offset), 1 per scene (lights, shapes), 2 per texture. Macros, not
+// constants, because GLSL layout() wants literals.
 #define PW_SET_FRAME 0
 #define PW_BINDING_FRAME_UNIFORMS 0
 #define PW_SET_SCENE 1
@@ -36,6 +37,9 @@ using uint = uint32_t;
 #define PW_BINDING_LIGHT_LISTS 2
 #define PW_SET_TEXTURE 2
 #define PW_BINDING_TEXTURE 0
+// The image pipeline (image.vert, image.frag) has one set: the image and its sampler.
+#define PW_SET_IMAGE 0
+#define PW_BINDING_IMAGE 0
 
 // Vertex input locations (one interleaved binding, see engine/gpu/scene_packing.h).
 #define PW_LOCATION_POSITION 0
@@ -66,7 +70,7 @@ PW_SHADER_CONST uint kMaterialVertexColor = 8u;    // per-vertex colour replaces
 PW_SHADER_CONST uint kMaterialTwoSided = 16u;      // solid FALSE: light the back face with -N
 PW_SHADER_CONST uint kMaterialIntensityTexture = 32u;  // a 1- or 2-component texture modulates the colour
 
-// Set 0: one per frame in flight.
+// Set 0: one per scene view of a frame in flight.
 struct FrameUniforms {
   mat4 viewProjection;     // world to Vulkan clip
   vec4 cameraPosition;     // xyz world metres
@@ -117,7 +121,18 @@ struct DrawPushConstants {
   vec4 textureSource[3];
 };
 
+// Per ImageView (image.frag): where the image lies in the frame and what is drawn
+// beyond its edges. Frame position = offset + scale * image position, image pixel
+// centres at integers (engine/gpu/view.h).
+struct ImagePushConstants {
+  vec4 transform;   // xy: frame pixels per image pixel (x, y), zw: offset in frame pixels
+  vec4 imageSize;   // xy: width, height in pixels; zw: 0
+  vec4 background;  // rgb linear, a: coverage (0: leave the frame as it is)
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(ImagePushConstants) == 48 && offsetof(ImagePushConstants, imageSize) == 16 &&
+              offsetof(ImagePushConstants, background) == 32);
 static_assert(sizeof(FrameUniforms) == 112 && offsetof(FrameUniforms, cameraPosition) == 64 &&
               offsetof(FrameUniforms, headlightDirection) == 80 && offsetof(FrameUniforms, lightCounts) == 96);
 static_assert(sizeof(LightGpu) == 80 && offsetof(LightGpu, positionType) == 16 &&

@@ -1,8 +1,15 @@
 #include "engine/gpu/frame_slot.h"
 
+#include <algorithm>
+
 #include "engine/gpu/vk_check.h"
 
 namespace pw::engine::gpu {
+namespace {
+
+constexpr uint32_t kInitialViews = 4;  // scene views per frame before the uniform buffer grows
+
+}  // namespace
 
 Status FrameSlot::waitAndReset(VkDevice device) {
   const VkFence handle = fence.get();
@@ -12,8 +19,30 @@ Status FrameSlot::waitAndReset(VkDevice device) {
   return {};
 }
 
+Status FrameSlot::reserveViews(const Context& context, uint32_t views) {
+  if (views <= viewCapacity) return {};
+  const VkDeviceSize alignment = std::max<VkDeviceSize>(context.properties().limits.minUniformBufferOffsetAlignment, 16);
+  const VkDeviceSize stride = (sizeof(FrameUniforms) + alignment - 1) / alignment * alignment;
+  const uint32_t capacity = std::max(views, viewCapacity * 2);
+  auto buffer = createBuffer(context, stride * capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::kUpload);
+  if (!buffer) return buffer.error();
+  uniforms = std::move(*buffer);
+  uniformStride = stride;
+  viewCapacity = capacity;
+  // One FrameUniforms is visible through the descriptor; the dynamic offset picks which.
+  const VkDescriptorBufferInfo bufferInfo{uniforms.get(), 0, sizeof(FrameUniforms)};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = frameSet;
+  write.dstBinding = PW_BINDING_FRAME_UNIFORMS;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+  write.pBufferInfo = &bufferInfo;
+  vkUpdateDescriptorSets(context.device(), 1, &write, 0, nullptr);
+  return {};
+}
+
 Result<OwnedDescriptorPool> createFrameDescriptorPool(const Context& context, uint32_t count) {
-  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, count};
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, count};
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   info.maxSets = count;
   info.poolSizeCount = 1;
@@ -45,24 +74,13 @@ Result<FrameSlot> createFrameSlot(const Context& context, const PipelineLibrary&
   PW_VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
   slot.fence = OwnedFence(device, fence);
 
-  auto uniforms = createBuffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::kUpload);
-  if (!uniforms) return uniforms.error();
-  slot.uniforms = std::move(*uniforms);
-
   const VkDescriptorSetLayout layout = pipelines.frameSetLayout();
   VkDescriptorSetAllocateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   setInfo.descriptorPool = pool;
   setInfo.descriptorSetCount = 1;
   setInfo.pSetLayouts = &layout;
   PW_VK_CHECK(vkAllocateDescriptorSets(device, &setInfo, &slot.frameSet));
-  const VkDescriptorBufferInfo bufferInfo{slot.uniforms.get(), 0, sizeof(FrameUniforms)};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = slot.frameSet;
-  write.dstBinding = PW_BINDING_FRAME_UNIFORMS;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  write.pBufferInfo = &bufferInfo;
-  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+  PW_TRY(slot.reserveViews(context, kInitialViews));
   return slot;
 }
 

@@ -16,49 +16,6 @@ constexpr VkFormat kTextureFormat = VK_FORMAT_R8G8B8A8_SRGB;  // sampled as line
 
 VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value + alignment - 1) / alignment * alignment; }
 
-// Where each piece lies in the one staging buffer.
-struct StagingLayout {
-  VkDeviceSize vertices = 0, indices = 0, lights = 0, shapes = 0, lightLists = 0;
-  std::vector<VkDeviceSize> textures;  // [0]: the white texel
-  VkDeviceSize total = 0;
-};
-
-// Fills the rest of the chain from level 0 by halving blits (linear filtering in
-// linear space, as the format is sRGB), leaving every level SHADER_READ_ONLY.
-void recordMipChain(VkCommandBuffer cmd, const GpuImage& image) {
-  const uint32_t levels = image.spec.mipLevels;
-  int32_t w = static_cast<int32_t>(image.spec.width), h = static_cast<int32_t>(image.spec.height);
-  for (uint32_t level = 1; level < levels; ++level) {
-    transitionImage(cmd, {image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 1});
-    const int32_t nw = std::max(w / 2, 1), nh = std::max(h / 2, 1);
-    VkImageBlit blit{};
-    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
-    blit.srcOffsets[1] = {w, h, 1};
-    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
-    blit.dstOffsets[1] = {nw, nh, 1};
-    vkCmdBlitImage(cmd, image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   1, &blit, VK_FILTER_LINEAR);
-    w = nw;
-    h = nh;
-  }
-  const ImageTransition done[2] = {
-      {image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 0, levels - 1},
-      {image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-       VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
-       levels - 1, 1},
-  };
-  if (levels > 1) {
-    transitionImages(cmd, done);
-  } else {
-    transitionImage(cmd, done[1]);
-  }
-}
-
 // Lighting per vertex, a lamp's pool of light on a large face falls between its
 // corners: lit faces longer than 1/40 of the scene are cut up (up to 16 x 16 pieces a
 // triangle, 200000 triangles a mesh) when the scene has point or spot lights. Nothing
@@ -101,27 +58,21 @@ std::optional<Scene> subdividedForVertexLighting(const Scene& scene) {
 
 }  // namespace
 
-Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context, const PipelineLibrary& pipelines,
-                                                         const Scene& input) {
+Result<SceneStaging> GpuScene::stage(const Context& context, const PipelineLibrary& pipelines, const Scene& input) {
   const std::optional<Scene> subdivided = pipelines.vertexLighting() ? subdividedForVertexLighting(input) : std::nullopt;
   const Scene& scene = subdivided ? *subdivided : input;
   auto packedResult = packScene(scene);
   if (!packedResult) return packedResult.error();
   PackedScene& packed = *packedResult;
-  const VkDevice device = context.device();
-  auto out = std::make_shared<GpuScene>();
-  out->backgroundLinear = packed.backgroundLinear;
-  out->headlight = scene.navigation.headlight;
-  out->lightCounts = packed.lightCounts;
+  SceneStaging out;
+  out.backgroundLinear = packed.backgroundLinear;
+  out.headlight = scene.navigation.headlight;
+  out.lightCounts = packed.lightCounts;
 
   // Textures: the image size limit is the device's, so it is checked here.
   const uint32_t maxSide = context.properties().limits.maxImageDimension2D;
-  VkFormatProperties formatProps;
-  vkGetPhysicalDeviceFormatProperties(context.physicalDevice(), kTextureFormat, &formatProps);
-  const VkFormatFeatureFlags mipFeatures = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT |
-                                           VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-  const bool canBlitMips = (formatProps.optimalTilingFeatures & mipFeatures) == mipFeatures;
   std::vector<const Image*> images{nullptr};  // slot 0: white
+  out.textures.push_back({1, 1, TextureWrap::kRepeat, TextureWrap::kRepeat, false, 0});
   for (const PackedTexture& t : packed.textures) {
     const Image& image = *t.texture->image;
     if (static_cast<uint32_t>(image.width) > maxSide || static_cast<uint32_t>(image.height) > maxSide) {
@@ -130,83 +81,103 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
                        std::to_string(maxSide) + " pixel limit; scale it down");
     }
     images.push_back(&image);
+    out.textures.push_back({static_cast<uint32_t>(image.width), static_cast<uint32_t>(image.height), t.texture->wrapS,
+                            t.texture->wrapT, t.texture->sourceFromTexCoord.has_value(), 0});
   }
 
-  StagingLayout layout;
-  const auto place = [&](VkDeviceSize bytes) {
-    const VkDeviceSize at = alignUp(layout.total, 16);
-    layout.total = at + bytes;
-    return at;
+  VkDeviceSize total = 0;
+  const auto place = [&](SceneStaging::Range& range, VkDeviceSize bytes) {
+    range.offset = alignUp(total, 16);
+    range.size = bytes;
+    total = range.offset + bytes;
   };
-  const VkDeviceSize vertexBytes = packed.vertices.size() * sizeof(Vertex);
-  const VkDeviceSize indexBytes = packed.indices.size() * sizeof(uint32_t);
-  const VkDeviceSize lightBytes = packed.lights.size() * sizeof(LightGpu);
-  const VkDeviceSize shapeBytes = packed.shapes.size() * sizeof(ShapeGpu);
-  const VkDeviceSize lightListBytes = packed.lightLists.size() * sizeof(uint32_t);
-  layout.vertices = place(vertexBytes);
-  layout.indices = place(indexBytes);
-  layout.lights = place(lightBytes);
-  layout.shapes = place(shapeBytes);
-  layout.lightLists = place(lightListBytes);
-  for (const Image* image : images) layout.textures.push_back(place(image ? image->rgba.size() : 4));
+  place(out.vertices, packed.vertices.size() * sizeof(Vertex));
+  place(out.indices, packed.indices.size() * sizeof(uint32_t));
+  place(out.lights, packed.lights.size() * sizeof(LightGpu));
+  place(out.shapes, packed.shapes.size() * sizeof(ShapeGpu));
+  place(out.lightLists, packed.lightLists.size() * sizeof(uint32_t));
+  for (size_t i = 0; i < images.size(); ++i) {
+    SceneStaging::Range range;
+    place(range, images[i] ? images[i]->rgba.size() : 4);
+    out.textures[i].offset = range.offset;
+  }
 
-  auto staging = createBuffer(context, layout.total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kUpload);
-  if (!staging) return staging.error();
-  auto* bytes = static_cast<uint8_t*>(staging->mapped);
-  const auto put = [&](VkDeviceSize at, const void* from, VkDeviceSize size) {
-    if (size > 0) std::memcpy(bytes + at, from, size);  // empty vectors may have null data()
+  auto stagingBuffer = createBuffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kUpload);
+  if (!stagingBuffer) return stagingBuffer.error();
+  out.staging = std::make_shared<const Buffer>(std::move(*stagingBuffer));
+  auto* bytes = static_cast<uint8_t*>(out.staging->mapped);
+  const auto put = [&](const SceneStaging::Range& range, const void* from) {
+    if (range.size > 0) std::memcpy(bytes + range.offset, from, range.size);  // empty vectors may have null data()
   };
-  put(layout.vertices, packed.vertices.data(), vertexBytes);
-  put(layout.indices, packed.indices.data(), indexBytes);
-  put(layout.lights, packed.lights.data(), lightBytes);
-  put(layout.shapes, packed.shapes.data(), shapeBytes);
-  put(layout.lightLists, packed.lightLists.data(), lightListBytes);
+  put(out.vertices, packed.vertices.data());
+  put(out.indices, packed.indices.data());
+  put(out.lights, packed.lights.data());
+  put(out.shapes, packed.shapes.data());
+  put(out.lightLists, packed.lightLists.data());
   for (size_t i = 0; i < images.size(); ++i) {
     static const uint8_t kWhite[4] = {255, 255, 255, 255};
-    std::memcpy(bytes + layout.textures[i], images[i] ? images[i]->rgba.data() : kWhite, images[i] ? images[i]->rgba.size() : 4);
+    std::memcpy(bytes + out.textures[i].offset, images[i] ? images[i]->rgba.data() : kWhite,
+                images[i] ? images[i]->rgba.size() : 4);
   }
+  out.opaque = std::move(packed.opaque);
+  out.transparent = std::move(packed.transparent);
+  return out;
+}
 
-  const auto makeBuffer = [&](Buffer& target, VkDeviceSize size, VkBufferUsageFlags usage) -> Status {
-    auto buffer = createBuffer(context, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDeviceLocal);
+Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context, const PipelineLibrary& pipelines,
+                                                         SceneStaging staged, UploadQueue& uploads) {
+  const VkDevice device = context.device();
+  auto out = std::make_shared<GpuScene>();
+  out->backgroundLinear = staged.backgroundLinear;
+  out->headlight = staged.headlight;
+  out->lightCounts = staged.lightCounts;
+  const auto makeBuffer = [&](Buffer& target, const SceneStaging::Range& range, VkBufferUsageFlags usage) -> Status {
+    auto buffer = createBuffer(context, range.size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDeviceLocal);
     if (!buffer) return buffer.error();
     target = std::move(*buffer);
     return {};
   };
-  PW_TRY(makeBuffer(out->vertices, vertexBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
-  PW_TRY(makeBuffer(out->indices, indexBytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT));
-  PW_TRY(makeBuffer(out->lights, lightBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
-  PW_TRY(makeBuffer(out->shapes, shapeBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
-  PW_TRY(makeBuffer(out->lightLists, lightListBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
-  for (const Image* image : images) {
+  PW_TRY(makeBuffer(out->vertices, staged.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT));
+  PW_TRY(makeBuffer(out->indices, staged.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT));
+  PW_TRY(makeBuffer(out->lights, staged.lights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  PW_TRY(makeBuffer(out->shapes, staged.shapes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  PW_TRY(makeBuffer(out->lightLists, staged.lightLists, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  const bool blitMips = canBlitMips(context, kTextureFormat);
+  for (const SceneStaging::TextureInfo& t : staged.textures) {
     ImageSpec spec;
     spec.format = kTextureFormat;
-    spec.width = image ? static_cast<uint32_t>(image->width) : 1;
-    spec.height = image ? static_cast<uint32_t>(image->height) : 1;
-    spec.mipLevels = canBlitMips ? mipLevelCount(spec.width, spec.height) : 1;
+    spec.width = t.width;
+    spec.height = t.height;
+    spec.mipLevels = blitMips ? mipLevelCount(spec.width, spec.height) : 1;
     spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     auto gpuImage = createImage(context, spec);
     if (!gpuImage) return gpuImage.error();
     out->textures.push_back(std::move(*gpuImage));
   }
 
-  PW_TRY(context.submitAndWait([&](VkCommandBuffer cmd) {
-    const auto copy = [&](const Buffer& target, VkDeviceSize from, VkDeviceSize size) {
-      if (size == 0) return;
-      const VkBufferCopy region{from, 0, size};
+  // Not waited for: the copies and blits run while the caller goes on; the staging
+  // buffer and the new scene stay alive until they are done (upload_queue.h).
+  const std::shared_ptr<const Buffer> staging = staged.staging;
+  const auto keepAlive = std::make_shared<std::pair<std::shared_ptr<const Buffer>, std::shared_ptr<const GpuScene>>>(
+      staging, out);
+  PW_TRY(uploads.submit([&](VkCommandBuffer cmd) {
+    const auto copy = [&](const Buffer& target, const SceneStaging::Range& range) {
+      if (range.size == 0) return;
+      const VkBufferCopy region{range.offset, 0, range.size};
       vkCmdCopyBuffer(cmd, staging->get(), target.get(), 1, &region);
     };
-    copy(out->vertices, layout.vertices, vertexBytes);
-    copy(out->indices, layout.indices, indexBytes);
-    copy(out->lights, layout.lights, lightBytes);
-    copy(out->shapes, layout.shapes, shapeBytes);
-    copy(out->lightLists, layout.lightLists, lightListBytes);
+    copy(out->vertices, staged.vertices);
+    copy(out->indices, staged.indices);
+    copy(out->lights, staged.lights);
+    copy(out->shapes, staged.shapes);
+    copy(out->lightLists, staged.lightLists);
     for (size_t i = 0; i < out->textures.size(); ++i) {
       const GpuImage& image = out->textures[i];
       transitionImage(cmd, {image.get(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                             VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
                             VK_ACCESS_2_TRANSFER_WRITE_BIT});
       VkBufferImageCopy region{};
-      region.bufferOffset = layout.textures[i];
+      region.bufferOffset = staged.textures[i].offset;
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageExtent = {image.spec.width, image.spec.height, 1};
       vkCmdCopyBufferToImage(cmd, staging->get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
@@ -223,7 +194,7 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
     dependency.memoryBarrierCount = 1;
     dependency.pMemoryBarriers = &visible;
     vkCmdPipelineBarrier2(cmd, &dependency);
-  }));
+  }, keepAlive));
 
   // Descriptors: one scene set, one set per texture slot.
   const uint32_t textureSets = static_cast<uint32_t>(out->textures.size());
@@ -266,9 +237,8 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   bufferWrite(PW_BINDING_SHAPES, &shapeInfo);
   bufferWrite(PW_BINDING_LIGHT_LISTS, &lightListInfo);
   for (uint32_t slot = 0; slot < textureSets; ++slot) {
-    const Texture* texture = slot == 0 ? nullptr : packed.textures[slot - 1].texture;
-    imageInfos[slot].sampler = texture ? pipelines.sampler(texture->wrapS, texture->wrapT, texture->sourceFromTexCoord.has_value())
-                                       : pipelines.sampler(TextureWrap::kRepeat, TextureWrap::kRepeat, false);
+    const SceneStaging::TextureInfo& t = staged.textures[slot];
+    imageInfos[slot].sampler = pipelines.sampler(t.wrapS, t.wrapT, t.cutFromPhoto);
     imageInfos[slot].imageView = out->textures[slot].view.get();
     imageInfos[slot].imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -281,8 +251,8 @@ Result<std::shared_ptr<const GpuScene>> GpuScene::upload(const Context& context,
   }
   vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 
-  out->opaque = std::move(packed.opaque);
-  out->transparent = std::move(packed.transparent);
+  out->opaque = std::move(staged.opaque);
+  out->transparent = std::move(staged.transparent);
   return std::shared_ptr<const GpuScene>(std::move(out));
 }
 

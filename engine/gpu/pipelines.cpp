@@ -39,7 +39,7 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
   const VkDevice device = context.device();
   std::unique_ptr<PipelineLibrary> lib(new PipelineLibrary(context));
   {
-    auto frame = makeSetLayout(device, {{PW_BINDING_FRAME_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kGraphicsStages, nullptr}});
+    auto frame = makeSetLayout(device, {{PW_BINDING_FRAME_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, kGraphicsStages, nullptr}});
     if (!frame) return frame.error();
     lib->frameSetLayout_ = std::move(*frame);
     auto scene = makeSetLayout(device, {{PW_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kGraphicsStages, nullptr},

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <optional>
 
+#include "engine/gpu/barriers.h"
 #include "engine/gpu/renderer_impl.h"
+#include "engine/gpu/view_recorder.h"
 #include "engine/gpu/vk_check.h"
 
 namespace pw::engine {
@@ -17,6 +19,30 @@ struct SwapchainImage {
 };
 
 bool isSrgb(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_A8B8G8R8_SRGB_PACK32; }
+
+// Where red and blue lie in a capturable swapchain format's 4 bytes; none for others.
+std::optional<std::pair<int, int>> redBlueBytes(VkFormat f) {
+  switch (f) {
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_B8G8R8A8_UNORM:
+      return std::pair(2, 0);
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+    case VK_FORMAT_A8B8G8R8_UNORM_PACK32:
+      return std::pair(0, 2);
+    default:
+      return std::nullopt;
+  }
+}
+
+// A read-back of one presented frame: the buffer the frame's commands copy into, and
+// the frame slot whose fence says when it is there.
+struct Capture {
+  std::shared_ptr<gpu::Buffer> buffer;
+  VkExtent2D extent{0, 0};
+  size_t slot = 0;
+};
 
 }  // namespace
 
@@ -42,10 +68,13 @@ struct Presenter::Impl {
   int requestedWidth = 0;
   int requestedHeight = 0;
   bool needsRecreate = true;
+  bool transferSource = false;  // swapchain images can be copied from (captures)
   uint32_t frameIndex = 0;
   uint64_t presented = 0;
-  gpu::DrawScratch scratch;
+  ViewRecorder recorder;
   FrameStats stats;
+  bool captureRequested = false;
+  std::optional<Capture> capture;  // made by a drawn frame, not yet taken
 
   Impl(Renderer::Impl& r) : renderer(r), context(*r.context) {}
   ~Impl() {
@@ -56,6 +85,8 @@ struct Presenter::Impl {
 
   Status createOverlayPass();
   Status recreateSwapchain();
+  // Records the copy of `image` (after the overlay pass) into a new capture buffer.
+  Status recordCapture(VkCommandBuffer cmd, VkImage image, gpu::FrameSlot& slot);
 };
 
 Status Presenter::Impl::createOverlayPass() {
@@ -82,12 +113,13 @@ Status Presenter::Impl::createOverlayPass() {
   dependencies[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
   dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  // Presenting waits on a semaphore; a capture copies the image afterwards.
   dependencies[1].srcSubpass = 0;
   dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;  // present waits on a semaphore
-  dependencies[1].dstAccessMask = 0;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   info.attachmentCount = 1;
   info.pAttachments = &attachment;
@@ -119,6 +151,7 @@ Status Presenter::Impl::recreateSwapchain() {
   // resize causes, waits for the queue.
   PW_VK_CHECK(vkQueueWaitIdle(context.queue()));
   for (gpu::FrameSlot& slot : frames) slot.inFlight.clear();
+  PW_TRY(renderer.uploads->collect());
 
   uint32_t count = std::max(caps.minImageCount + 1, 2u);
   if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
@@ -129,7 +162,10 @@ Status Presenter::Impl::recreateSwapchain() {
   info.imageColorSpace = surfaceFormat.colorSpace;
   info.imageExtent = size;
   info.imageArrayLayers = 1;
-  info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  // Copying from the images is for captures (tests, screenshots of what the window
+  // shows); surfaces nearly always allow it.
+  transferSource = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) && redBlueBytes(surfaceFormat.format);
+  info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (transferSource ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0);
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = caps.currentTransform;
   info.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
@@ -277,13 +313,23 @@ void Presenter::resize(int width, int height) {
 }
 
 Status Presenter::drawFrame(const Camera& camera, const FrameSettings& settings, const OverlayCallback& overlay) {
+  SceneView view;
+  view.scene = impl_->renderer.defaultScene;
+  view.camera = camera;
+  view.settings = settings;
+  return drawFrame(std::vector<View>{view}, overlay);
+}
+
+Status Presenter::drawFrame(const std::vector<View>& views, const OverlayCallback& overlay, const glm::vec3& clearColor) {
   Impl& p = *impl_;
   const VkDevice device = p.context.device();
-  PW_TRY(checkCamera(camera));
   if (p.needsRecreate || !p.swapchain) {
     PW_TRY(p.recreateSwapchain());
     if (p.needsRecreate) return {};  // minimised: nothing to draw into
   }
+  // Before anything is acquired: a bad view is an error that leaves no image acquired.
+  PW_TRY(p.recorder.prepare(p.renderer, views, p.extent));
+  PW_TRY(p.renderer.uploads->collect());
   gpu::FrameSlot& slot = p.frames[p.frameIndex];
   PW_TRY(slot.waitAndReset(device));
 
@@ -296,38 +342,35 @@ Status Presenter::drawFrame(const Camera& camera, const FrameSettings& settings,
   }
   if (acquire == VK_SUBOPTIMAL_KHR) p.needsRecreate = true;  // draw it anyway, recreate after
   PW_VK_CHECK(acquire);
-  SwapchainImage& target = p.images[imageIndex];
+  SwapchainImage& image = p.images[imageIndex];
 
   const VkCommandBuffer cmd = slot.commands;
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   PW_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-  gpu::SceneTargets targets;
+  FrameTarget target;
+  target.image = image.image;
+  target.view = image.view.get();
   if (p.msaaColor) {
-    targets.color = p.msaaColor->get();
-    targets.colorView = p.msaaColor->view.get();
-    targets.resolve = target.image;
-    targets.resolveView = target.view.get();
-  } else {
-    targets.color = target.image;
-    targets.colorView = target.view.get();
+    target.msaa = p.msaaColor->get();
+    target.msaaView = p.msaaColor->view.get();
   }
-  targets.depth = p.depth->get();
-  targets.depthView = p.depth->view.get();
-  targets.format = p.surfaceFormat.format;
-  targets.samples = p.renderer.samples;
-  targets.extent = p.extent;
-  targets.encodeSrgbInShader = !isSrgb(p.surfaceFormat.format);
-  const Status recorded = gpu::recordScenePass(cmd, *p.renderer.pipelines, *p.renderer.scene, slot, targets, camera,
-                                               settings, p.scratch, p.stats);
+  target.depth = p.depth->get();
+  target.depthView = p.depth->view.get();
+  target.format = p.surfaceFormat.format;
+  target.extent = p.extent;
+  target.encodeSrgbInShader = !isSrgb(p.surfaceFormat.format);
+  const Status recorded = p.recorder.record(cmd, p.renderer, slot, target, clearColor);
+  p.stats = p.recorder.stats();
 
   VkRenderPassBeginInfo passInfo{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   passInfo.renderPass = p.overlayPass.get();
-  passInfo.framebuffer = target.framebuffer.get();
+  passInfo.framebuffer = image.framebuffer.get();
   passInfo.renderArea = {{0, 0}, p.extent};
   vkCmdBeginRenderPass(cmd, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
   if (overlay) overlay(cmd);
   vkCmdEndRenderPass(cmd);
+  if (p.captureRequested && p.transferSource) PW_TRY(p.recordCapture(cmd, image.image, slot));
   PW_VK_CHECK(vkEndCommandBuffer(cmd));
   PW_TRY(recorded);
 
@@ -337,7 +380,7 @@ Status Presenter::drawFrame(const Camera& camera, const FrameSettings& settings,
   wait.semaphore = acquired;
   wait.stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
   VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
-  signal.semaphore = target.renderFinished.get();
+  signal.semaphore = image.renderFinished.get();
   signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
   VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
   cmdInfo.commandBuffer = cmd;
@@ -349,9 +392,8 @@ Status Presenter::drawFrame(const Camera& camera, const FrameSettings& settings,
   submit.signalSemaphoreInfoCount = 1;
   submit.pSignalSemaphoreInfos = &signal;
   PW_VK_CHECK(vkQueueSubmit2(p.context.queue(), 1, &submit, fence));
-  slot.inFlight.push_back(p.renderer.scene);  // a setScene while this frame draws must not free it
 
-  const VkSemaphore finished = target.renderFinished.get();
+  const VkSemaphore finished = image.renderFinished.get();
   const VkSwapchainKHR swapchain = p.swapchain.get();
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   present.waitSemaphoreCount = 1;
@@ -368,6 +410,76 @@ Status Presenter::drawFrame(const Camera& camera, const FrameSettings& settings,
   }
   ++p.presented;
   return {};
+}
+
+Status Presenter::Impl::recordCapture(VkCommandBuffer cmd, VkImage image, gpu::FrameSlot& slot) {
+  Capture c;
+  c.extent = extent;
+  c.slot = static_cast<size_t>(&slot - frames.data());
+  auto buffer = gpu::createBuffer(context, VkDeviceSize{extent.width} * extent.height * 4,
+                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::kReadback);
+  if (!buffer) return buffer.error();
+  c.buffer = std::make_shared<gpu::Buffer>(std::move(*buffer));
+  // After the overlay pass the image is PRESENT_SRC, its writes made visible to
+  // transfers by the pass's external dependency; copied, it goes back for the present.
+  gpu::transitionImage(cmd, {image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                             VK_ACCESS_2_TRANSFER_READ_BIT});
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {extent.width, extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, c.buffer->get(), 1, &region);
+  gpu::transitionImage(cmd, {image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE});
+  VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+  toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.buffer = c.buffer->get();
+  toHost.size = VK_WHOLE_SIZE;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.bufferMemoryBarrierCount = 1;
+  dependency.pBufferMemoryBarriers = &toHost;
+  vkCmdPipelineBarrier2(cmd, &dependency);
+  slot.inFlight.push_back(c.buffer);  // an untaken capture replaced by a newer one lives until this frame is done
+  capture = std::move(c);
+  captureRequested = false;
+  return {};
+}
+
+void Presenter::captureNextFrame() { impl_->captureRequested = true; }
+
+Result<Image> Presenter::takeCapture() {
+  Impl& p = *impl_;
+  if (!p.capture) {
+    if (!p.transferSource) {
+      return makeError("this window's swapchain (format " + std::to_string(int(p.surfaceFormat.format)) +
+                       ") cannot be copied from; captures are not available");
+    }
+    return makeError(p.captureRequested ? "no frame has been drawn since captureNextFrame() (is the window minimised?)"
+                                        : "no capture was asked for: call captureNextFrame() before drawFrame()");
+  }
+  const Capture c = std::move(*p.capture);
+  p.capture.reset();
+  const VkFence fence = p.frames[c.slot].fence.get();
+  PW_VK_CHECK(vkWaitForFences(p.context.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+  PW_TRY(gpu::invalidate(p.context, *c.buffer));
+  const auto [red, blue] = *redBlueBytes(p.surfaceFormat.format);
+  Image out;
+  out.width = int(c.extent.width);
+  out.height = int(c.extent.height);
+  out.rgba.resize(size_t(out.width) * size_t(out.height) * 4);
+  const auto* from = static_cast<const uint8_t*>(c.buffer->mapped);
+  for (size_t i = 0; i < out.rgba.size(); i += 4) {
+    out.rgba[i] = from[i + red];
+    out.rgba[i + 1] = from[i + 1];
+    out.rgba[i + 2] = from[i + blue];
+    out.rgba[i + 3] = 255;  // the window is opaque whatever alpha the overlay left
+  }
+  return out;
 }
 
 Status Presenter::waitIdle() {

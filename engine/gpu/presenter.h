@@ -1,27 +1,39 @@
-// Drawing the Renderer's scene to a window's swapchain. The window code (GLFW, in
-// editor/) creates the VkSurfaceKHR with renderer.instance() and passes it in
-// borrowed; it must destroy the Presenter before the surface, and both before the
+// Drawing the Renderer's views (view.h) to a window's swapchain. The window code
+// (GLFW, in editor/) creates the VkSurfaceKHR with renderer.instance() and passes it
+// in borrowed; it must destroy the Presenter before the surface, and both before the
 // Renderer. pw_gpu never sees GLFW or ImGui.
 //
-// Per frame: the scene is drawn (multisampled) and resolved into the swapchain image
-// with dynamic rendering, then `overlay` records into overlayRenderPass() on that
-// image (load, store), which is what ImGui 1.86's Vulkan backend needs:
+// Per frame: the views are drawn in order into the swapchain image with dynamic
+// rendering (scene views multisampled and resolved), then `overlay` records into
+// overlayRenderPass() on that image (load, store), which is what ImGui 1.86's Vulkan
+// backend needs:
 //   ImGui_ImplVulkan_InitInfo info{...renderer.device(), queue(), ...};
 //   info.MinImageCount = presenter.minImageCount(); info.ImageCount = presenter.imageCount();
 //   ImGui_ImplVulkan_Init(&info, presenter.overlayRenderPass());
-//   presenter.drawFrame(camera, {}, [](VkCommandBuffer cmd) {
-//     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); });
+//   presenter.drawFrame({ImageView{photo, {zoom, pan}, canvas}, SceneView{model, camera, preview}},
+//                       [](VkCommandBuffer cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); });
 // The render pass outlives swapchain recreation (its format only changes if the
 // surface's does, which a resize does not do).
+//
+// The views lie under ImGui: an application shows the photo or a 3D preview inside an
+// ImGui window by giving that window no background (ImGuiWindowFlags_NoBackground)
+// and drawing the view into the window's content rectangle, which ImGui reports in
+// the same frame pixels (scaled by io.DisplayFramebufferScale). Handles, lines and
+// text then go on top with ImGui's draw lists. (Not ImDrawList::AddCallback with a
+// pipeline of ours: 1.86's backend draws inside its own VkRenderPass with its own
+// pipeline and descriptor state, and binds only its font texture.)
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include "base/result.h"
 #include "engine/gpu/renderer.h"
+#include "engine/gpu/view.h"
+#include "engine/scene/image.h"
 
 namespace pw::engine {
 
@@ -52,9 +64,23 @@ class Presenter {
   // at the next drawFrame. 0 x 0 (minimised) makes drawFrame skip frames.
   void resize(int width, int height);
 
-  // Draws one frame and queues it for presentation. Out-of-date and suboptimal
-  // swapchains (resizes) are handled here by recreating them; they are not errors.
+  // Draws `views` in order (each over what the ones before left), `overlay` on top,
+  // and queues the frame for presentation; pixels no view covers are `clearColor`
+  // (sRGB-encoded). Out-of-date and suboptimal swapchains (resizes) are handled here
+  // by recreating them; they are not errors. Errors: a view Renderer::renderViews
+  // would refuse (checked before anything is acquired or recorded).
+  Status drawFrame(const std::vector<View>& views, const OverlayCallback& overlay = {},
+                   const glm::vec3& clearColor = glm::vec3(0.0f));
+  // The default scene over the whole window: drawFrame({SceneView{defaultScene, camera, {}, settings}}).
   Status drawFrame(const Camera& camera, const FrameSettings& settings, const OverlayCallback& overlay = {});
+
+  // What the window shows, overlay included: the next drawn frame copies its image,
+  // after the overlay, into host memory; takeCapture() then waits for that frame and
+  // returns it as RGBA8, sRGB-encoded as shown (a BGRA swapchain is reordered), opaque,
+  // rows top to bottom. Errors: nothing asked for, no frame drawn since (minimised), a
+  // surface whose images cannot be copied.
+  void captureNextFrame();
+  Result<Image> takeCapture();
 
   // Waits until the GPU has finished every frame this Presenter submitted (before
   // tearing down what an overlay callback used, e.g. ImGui's backend).
@@ -66,7 +92,7 @@ class Presenter {
   VkFormat format() const;
   VkExtent2D extent() const;
   uint64_t framesPresented() const;
-  FrameStats lastFrameStats() const;
+  FrameStats lastFrameStats() const;  // summed over the last frame's scene views
 
   struct Impl;
 

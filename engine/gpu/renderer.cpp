@@ -7,6 +7,7 @@
 
 #include "engine/gpu/barriers.h"
 #include "engine/gpu/renderer_impl.h"
+#include "engine/gpu/view_recorder.h"
 #include "engine/gpu/vk_check.h"
 
 namespace pw::engine {
@@ -51,31 +52,27 @@ Result<OffscreenTargets> createOffscreenTargets(const gpu::Context& context, uin
   OffscreenTargets t;
   t.width = width;
   t.height = height;
-  const bool multisampled = samples != VK_SAMPLE_COUNT_1_BIT;
   gpu::ImageSpec color;
   color.format = VK_FORMAT_R8G8B8A8_SRGB;
   color.width = width;
   color.height = height;
-  color.samples = samples;
-  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (multisampled ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-  color.transient = multisampled;
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   auto colorImage = gpu::createImage(context, color);
   if (!colorImage) return colorImage.error();
   t.color = std::move(*colorImage);
-  if (multisampled) {
-    gpu::ImageSpec resolve = color;
-    resolve.samples = VK_SAMPLE_COUNT_1_BIT;
-    resolve.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    resolve.transient = false;
-    auto resolveImage = gpu::createImage(context, resolve);
-    if (!resolveImage) return resolveImage.error();
-    t.resolve = std::move(*resolveImage);
+  gpu::ImageSpec msaa = color;
+  msaa.samples = samples;
+  msaa.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  msaa.transient = true;
+  if (samples != VK_SAMPLE_COUNT_1_BIT) {
+    auto msaaImage = gpu::createImage(context, msaa);
+    if (!msaaImage) return msaaImage.error();
+    t.msaa = std::move(*msaaImage);
   }
-  gpu::ImageSpec depth = color;
+  gpu::ImageSpec depth = msaa;
   depth.format = gpu::kDepthFormat;
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-  depth.transient = true;
   auto depthImage = gpu::createImage(context, depth);
   if (!depthImage) return depthImage.error();
   t.depth = std::move(*depthImage);
@@ -84,6 +81,44 @@ Result<OffscreenTargets> createOffscreenTargets(const gpu::Context& context, uin
   if (!readback) return readback.error();
   t.readback = std::move(*readback);
   return t;
+}
+
+// Copies level 0 of `image` (in `layout`, last written or read at `stages`) into
+// `buffer` and makes it visible to the host; the image ends in `after`.
+void recordReadback(VkCommandBuffer cmd, VkImage image, VkExtent2D extent, VkImageLayout layout,
+                    VkPipelineStageFlags2 stages, VkAccessFlags2 writes, VkBuffer buffer, VkImageLayout after) {
+  gpu::transitionImage(cmd, {image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stages, writes,
+                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {extent.width, extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+  if (after != VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL) {
+    gpu::transitionImage(cmd, {image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, after, VK_PIPELINE_STAGE_2_COPY_BIT,
+                               VK_ACCESS_2_NONE, stages, VK_ACCESS_2_NONE});
+  }
+  VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+  toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.buffer = buffer;
+  toHost.size = VK_WHOLE_SIZE;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.bufferMemoryBarrierCount = 1;
+  dependency.pBufferMemoryBarriers = &toHost;
+  vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+Image imageFromReadback(const gpu::Buffer& buffer, uint32_t width, uint32_t height) {
+  Image image;
+  image.width = int(width);
+  image.height = int(height);
+  image.rgba.resize(size_t(width) * size_t(height) * 4);
+  std::memcpy(image.rgba.data(), buffer.mapped, image.rgba.size());
+  return image;
 }
 
 }  // namespace
@@ -159,30 +194,155 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const RendererOptions& option
   auto pipelines = gpu::PipelineLibrary::create(ctx, !keepFrameRate, options.perVertexLighting.value_or(keepFrameRate));
   if (!pipelines) return pipelines.error();
   impl->pipelines = std::move(*pipelines);
+  auto imagePipelines = gpu::ImagePipelines::create(ctx);
+  if (!imagePipelines) return imagePipelines.error();
+  impl->imagePipelines = std::move(*imagePipelines);
+  impl->uploads = std::make_unique<gpu::UploadQueue>(ctx);
   auto pool = gpu::createFrameDescriptorPool(ctx, 1);
   if (!pool) return pool.error();
   impl->framePool = std::move(*pool);
   auto frame = gpu::createFrameSlot(ctx, *impl->pipelines, impl->framePool.get());
   if (!frame) return frame.error();
   impl->frame = std::move(*frame);
-  auto empty = gpu::GpuScene::upload(ctx, *impl->pipelines, Scene{});
-  if (!empty) return empty.error();
-  impl->scene = std::move(*empty);
-  return std::unique_ptr<Renderer>(new Renderer(std::move(impl)));
+  std::unique_ptr<Renderer> renderer(new Renderer(std::move(impl)));
+  auto defaultScene = renderer->addScene(Scene{});
+  if (!defaultScene) return defaultScene.error();
+  renderer->impl_->defaultScene = *defaultScene;
+  return renderer;
 }
 
-Status Renderer::setScene(const Scene& scene) {
-  auto uploaded = gpu::GpuScene::upload(*impl_->context, *impl_->pipelines, scene);
+Status Renderer::setScene(const Scene& scene) { return replaceScene(impl_->defaultScene, scene); }
+
+StagedScene::StagedScene(std::unique_ptr<gpu::SceneStaging> staging) : staging_(std::move(staging)) {}
+StagedScene::StagedScene(StagedScene&&) noexcept = default;
+StagedScene& StagedScene::operator=(StagedScene&&) noexcept = default;
+StagedScene::~StagedScene() = default;
+
+Result<StagedScene> Renderer::stageScene(const Scene& scene) const {
+  auto staged = gpu::GpuScene::stage(*impl_->context, *impl_->pipelines, scene);
+  if (!staged) return staged.error();
+  return StagedScene(std::make_unique<gpu::SceneStaging>(std::move(*staged)));
+}
+
+Result<SceneHandle> Renderer::addScene(const Scene& scene) {
+  auto staged = stageScene(scene);
+  if (!staged) return staged.error();
+  return addScene(std::move(*staged));
+}
+
+Status Renderer::replaceScene(SceneHandle handle, const Scene& scene) {
+  if (!impl_->scenes.contains(handle.id)) {
+    return makeError("scene handle " + std::to_string(handle.id) + " names no scene (never added, or removed)");
+  }
+  auto staged = stageScene(scene);
+  if (!staged) return staged.error();
+  return replaceScene(handle, std::move(*staged));
+}
+
+Result<SceneHandle> Renderer::addScene(StagedScene staged) {
+  Impl& s = *impl_;
+  if (!staged.staging_) return makeError("this staged scene was already used");
+  PW_TRY(s.uploads->collect());
+  auto uploaded = gpu::GpuScene::upload(*s.context, *s.pipelines, std::move(*staged.staging_), *s.uploads);
+  staged.staging_.reset();
   if (!uploaded) return uploaded.error();
-  impl_->scene = std::move(*uploaded);  // frames still drawing the old one keep it alive
+  const SceneHandle handle{s.nextHandle++};
+  s.scenes.emplace(handle.id, std::move(*uploaded));
+  return handle;
+}
+
+Status Renderer::replaceScene(SceneHandle handle, StagedScene staged) {
+  Impl& s = *impl_;
+  const auto found = s.scenes.find(handle.id);
+  if (found == s.scenes.end()) return makeError("scene handle " + std::to_string(handle.id) + " names no scene (never added, or removed)");
+  if (!staged.staging_) return makeError("this staged scene was already used");
+  PW_TRY(s.uploads->collect());
+  auto uploaded = gpu::GpuScene::upload(*s.context, *s.pipelines, std::move(*staged.staging_), *s.uploads);
+  staged.staging_.reset();
+  if (!uploaded) return uploaded.error();
+  found->second = std::move(*uploaded);  // frames still drawing the old one keep it alive
   return {};
 }
 
+Status Renderer::removeScene(SceneHandle handle) {
+  Impl& s = *impl_;
+  if (handle == s.defaultScene) return makeError("the default scene cannot be removed; setScene(Scene{}) empties it");
+  if (s.scenes.erase(handle.id) == 0) return makeError("scene handle " + std::to_string(handle.id) + " names no scene (never added, or removed)");
+  return {};
+}
+
+SceneHandle Renderer::defaultScene() const { return impl_->defaultScene; }
+
+Result<ImageHandle> Renderer::addImage(const Image& image) {
+  Impl& s = *impl_;
+  PW_TRY(s.uploads->collect());
+  auto uploaded = gpu::ViewImage::upload(*s.context, *s.imagePipelines, image, *s.uploads);
+  if (!uploaded) return uploaded.error();
+  const ImageHandle handle{s.nextHandle++};
+  s.images.emplace(handle.id, std::move(*uploaded));
+  return handle;
+}
+
+Result<ImageHandle> Renderer::addRenderTarget(int width, int height) {
+  Impl& s = *impl_;
+  PW_TRY(checkFrameSize(*s.context, width, height, s.samples));
+  PW_TRY(s.uploads->collect());
+  auto target = gpu::ViewImage::renderTarget(*s.context, *s.imagePipelines, uint32_t(width), uint32_t(height),
+                                             s.samples, *s.uploads);
+  if (!target) return target.error();
+  const ImageHandle handle{s.nextHandle++};
+  s.images.emplace(handle.id, std::move(*target));
+  return handle;
+}
+
+Status Renderer::removeImage(ImageHandle handle) {
+  if (impl_->images.erase(handle.id) == 0) {
+    return makeError("image handle " + std::to_string(handle.id) + " names no image (never added, or removed)");
+  }
+  return {};
+}
+
+Result<glm::ivec2> Renderer::imageSize(ImageHandle handle) const {
+  const auto found = impl_->images.find(handle.id);
+  if (found == impl_->images.end()) return makeError("image handle " + std::to_string(handle.id) + " names no image (never added, or removed)");
+  return glm::ivec2(int(found->second->width()), int(found->second->height()));
+}
+
+Result<Image> Renderer::readImage(ImageHandle handle) {
+  Impl& s = *impl_;
+  const auto found = s.images.find(handle.id);
+  if (found == s.images.end()) return makeError("image handle " + std::to_string(handle.id) + " names no image (never added, or removed)");
+  const gpu::ViewImage& image = *found->second;
+  auto buffer = gpu::createBuffer(*s.context, VkDeviceSize{image.width()} * image.height() * 4,
+                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::kReadback);
+  if (!buffer) return buffer.error();
+  // Waiting for this submission waits for everything queued before it (frames drawing
+  // into a render target, the image's upload).
+  PW_TRY(s.context->submitAndWait([&](VkCommandBuffer cmd) {
+    recordReadback(cmd, image.color.get(), {image.width(), image.height()}, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                       VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT, buffer->get(),
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  }));
+  PW_TRY(gpu::invalidate(*s.context, *buffer));
+  return imageFromReadback(*buffer, image.width(), image.height());
+}
+
 Result<Image> Renderer::renderToImage(const Camera& camera, int width, int height, const FrameSettings& settings) {
+  SceneView view;
+  view.scene = impl_->defaultScene;
+  view.camera = camera;
+  view.settings = settings;
+  return renderViews({view}, width, height);
+}
+
+Result<Image> Renderer::renderViews(const std::vector<View>& views, int width, int height, const glm::vec3& clearColor) {
   Impl& s = *impl_;
   const gpu::Context& ctx = *s.context;
   PW_TRY(checkFrameSize(ctx, width, height, s.samples));
-  PW_TRY(checkCamera(camera));
+  PW_TRY(s.recorder.prepare(s, views, {uint32_t(width), uint32_t(height)}));
+  PW_TRY(s.uploads->collect());
   if (!s.offscreen || s.offscreen->width != uint32_t(width) || s.offscreen->height != uint32_t(height)) {
     PW_TRY(s.frame.waitAndReset(ctx.device()));  // the old targets may be in use
     s.offscreen.reset();
@@ -198,41 +358,22 @@ Result<Image> Renderer::renderToImage(const Camera& camera, int width, int heigh
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   PW_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-  gpu::SceneTargets targets;
-  targets.color = t.color.get();
-  targets.colorView = t.color.view.get();
-  if (t.resolve) {
-    targets.resolve = t.resolve->get();
-    targets.resolveView = t.resolve->view.get();
+  FrameTarget target;
+  target.image = t.color.get();
+  target.view = t.color.view.get();
+  if (t.msaa) {
+    target.msaa = t.msaa->get();
+    target.msaaView = t.msaa->view.get();
   }
-  targets.depth = t.depth.get();
-  targets.depthView = t.depth.view.get();
-  targets.format = t.color.spec.format;
-  targets.samples = s.samples;
-  targets.extent = {uint32_t(width), uint32_t(height)};
-  const Status recorded = gpu::recordScenePass(cmd, *s.pipelines, *s.scene, frame, targets, camera, settings, s.scratch, s.stats);
-
-  const VkImage result = t.resolve ? t.resolve->get() : t.color.get();
-  gpu::transitionImage(cmd, {result, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {uint32_t(width), uint32_t(height), 1};
-  vkCmdCopyImageToBuffer(cmd, result, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t.readback.get(), 1, &region);
-  VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-  toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-  toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-  toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  toHost.buffer = t.readback.get();
-  toHost.size = VK_WHOLE_SIZE;
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.bufferMemoryBarrierCount = 1;
-  dependency.pBufferMemoryBarriers = &toHost;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  target.depth = t.depth.get();
+  target.depthView = t.depth.view.get();
+  target.format = t.color.spec.format;
+  target.extent = {uint32_t(width), uint32_t(height)};
+  const Status recorded = s.recorder.record(cmd, s, frame, target, clearColor);
+  s.stats = s.recorder.stats();
+  recordReadback(cmd, t.color.get(), target.extent, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, t.readback.get(),
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);  // the next frame starts from UNDEFINED
   PW_VK_CHECK(vkEndCommandBuffer(cmd));
   PW_TRY(recorded);
 
@@ -244,16 +385,9 @@ Result<Image> Renderer::renderToImage(const Camera& camera, int width, int heigh
   submit.commandBufferInfoCount = 1;
   submit.pCommandBufferInfos = &cmdInfo;
   PW_VK_CHECK(vkQueueSubmit2(ctx.queue(), 1, &submit, fence));
-  frame.inFlight.push_back(s.scene);
   PW_TRY(frame.waitAndReset(ctx.device()));
   PW_TRY(gpu::invalidate(ctx, t.readback));
-
-  Image image;
-  image.width = width;
-  image.height = height;
-  image.rgba.resize(size_t(width) * size_t(height) * 4);
-  std::memcpy(image.rgba.data(), t.readback.mapped, image.rgba.size());
-  return image;
+  return imageFromReadback(t.readback, uint32_t(width), uint32_t(height));
 }
 
 Status Renderer::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {

@@ -1,14 +1,31 @@
-// photowalk's Vulkan renderer: draws a Scene (engine/scene/scene.h) with the VRML97
-// lighting model, offscreen to an Image here, or to a window through Presenter
-// (presenter.h). Vulkan 1.3 with dynamic rendering; a discrete or integrated GPU when
-// there is one, else the CPU device (lavapipe), which PW_DEVICE=cpu or
-// RendererOptions::forceCpu select explicitly.
+// photowalk's Vulkan renderer: draws Scenes (engine/scene/scene.h) with the VRML97
+// lighting model and 2D images (photos) as views (view.h), offscreen to an Image here,
+// or to a window through Presenter (presenter.h). Vulkan 1.3 with dynamic rendering; a
+// discrete or integrated GPU when there is one, else the CPU device (lavapipe), which
+// PW_DEVICE=cpu or RendererOptions::forceCpu select explicitly.
 //
 //   auto renderer = Renderer::create({});          // Result<std::unique_ptr<Renderer>>
 //   renderer.value()->setScene(scene);              // uploads meshes and textures once
 //   auto image = renderer.value()->renderToImage(cameraFromViewpoint(vp), 1280, 720, {});
 //
-// One thread at a time: a Renderer and its Presenter are used from one thread.
+// Several scenes and images live on the GPU at once, named by handles:
+//   SceneHandle model = *renderer->addScene(scene);
+//   ImageHandle photo = *renderer->addImage(photoImage);      // mip chain made on the GPU
+//   renderer->replaceScene(model, reducedScene);               // frames in flight keep the old one
+//   presenter->drawFrame({ImageView{photo, {zoom, pan}, canvasRect},
+//                         SceneView{model, orbitCamera, previewRect}}, imguiOverlay);
+// setScene/renderToImage work on the default scene (defaultScene()).
+//
+// Uploads (addScene, replaceScene, addImage) block the calling thread for their CPU
+// part only (packing the scene, copying into a staging buffer); the GPU copies and
+// mip blits are submitted without waiting for them or for the GPU to go idle, and
+// frames submitted afterwards see the result (one queue: submission order). So a
+// replacement never stalls the frames in flight, which keep the data they draw
+// alive until their fences signal. The CPU part of a scene's upload can move to a
+// worker thread (stageScene), leaving the renderer's thread a swap of a few ms.
+//
+// One thread at a time: a Renderer and its Presenter are used from one thread, but
+// for stageScene, which any thread may call.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +38,7 @@
 #include <vulkan/vulkan.h>
 
 #include "base/result.h"
+#include "engine/gpu/view.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/image.h"
 #include "engine/scene/scene.h"
@@ -52,15 +70,30 @@ struct RendererOptions {
   std::vector<std::string> instanceExtensions;
 };
 
-struct FrameSettings {
-  std::optional<bool> headlight;  // unset: the scene's NavigationInfo.headlight
-  std::optional<glm::vec3> backgroundColor;  // sRGB-encoded like scene colours; unset: the scene's
+namespace gpu {
+struct SceneStaging;  // gpu_scene.h
+}
+
+// The CPU half of a scene's upload (Renderer::stageScene), to be swapped in with
+// Renderer::addScene or replaceScene. Move-only; it must not outlive its Renderer.
+class StagedScene {
+ public:
+  StagedScene(StagedScene&&) noexcept;
+  StagedScene& operator=(StagedScene&&) noexcept;
+  ~StagedScene();
+
+ private:
+  friend class Renderer;
+  explicit StagedScene(std::unique_ptr<gpu::SceneStaging> staging);
+  std::unique_ptr<gpu::SceneStaging> staging_;
 };
 
-// What the last frame drew (for tests and the walkthrough's statistics).
+// What the last frame drew, summed over its scene views (for tests and the
+// walkthrough's statistics).
 struct FrameStats {
   uint32_t drawCalls = 0;
   uint32_t culledShapes = 0;  // outside the view frustum
+  uint32_t views = 0;         // scene and image views drawn (not those wholly outside the frame)
 };
 
 class Renderer {
@@ -70,16 +103,63 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Uploads the scene's meshes, textures and lights (blocking); later frames draw it.
-  // The Scene may be destroyed afterwards. On error the previous scene stays.
-  // Errors name the shape or texture at fault (a texture without pixels, bad indices).
+  // Uploads the scene's meshes, textures and lights as the default scene (see the
+  // top of this file for what blocks); later frames draw it. The Scene may be
+  // destroyed afterwards. On error the previous scene stays. Errors name the shape or
+  // texture at fault (a texture without pixels, bad indices).
   Status setScene(const Scene& scene);
 
-  // Draws the current scene (an empty one before setScene) from `camera` into a
+  // Draws the default scene (an empty one before setScene) from `camera` into a
   // width x height frame and reads it back: RGBA8, sRGB-encoded, opaque, rows top
   // to bottom. Sizes must be 1..the device's maximum (16384 on lavapipe) and the
   // targets must fit in 2 GiB; else an error says which limit was hit.
   Result<Image> renderToImage(const Camera& camera, int width, int height, const FrameSettings& settings = {});
+
+  // Scenes by handle. addScene uploads another scene beside the ones there are;
+  // replaceScene uploads `scene` in the place of `handle`'s (a reduced model while a
+  // corner is dragged, the full one after): frames in flight finish with the old one,
+  // later frames draw the new one, and on error the old one stays. removeScene frees
+  // the scene once no frame in flight uses it. Errors as setScene's, or an unknown
+  // handle; the default scene cannot be removed.
+  Result<SceneHandle> addScene(const Scene& scene);
+  Status replaceScene(SceneHandle handle, const Scene& scene);
+  Status removeScene(SceneHandle handle);
+  SceneHandle defaultScene() const;
+
+  // An upload in two halves, so that its slow part leaves the renderer's thread:
+  // stageScene does the CPU work (packing the scene, copying meshes and textures into a
+  // staging buffer: 150 ms for a scene with a 12-megapixel texture on two cores) and,
+  // alone among the Renderer's functions, may run on any thread, also while this one
+  // draws. addScene/replaceScene then make the GPU objects and submit the copies (a few
+  // ms, never waiting for the GPU). Errors as setScene's (from stageScene), or an
+  // unknown handle.
+  Result<StagedScene> stageScene(const Scene& scene) const;
+  Result<SceneHandle> addScene(StagedScene staged);
+  Status replaceScene(SceneHandle handle, StagedScene staged);
+
+  // A 2D image for ImageViews (a photo, up to the device's image size limit: 16384 on
+  // lavapipe): RGBA8, sRGB-encoded as engine::Image is, stored with a full mip chain
+  // made on the GPU (vkCmdBlitImage, filtered in linear light). Its pixels are copied;
+  // `image` may be destroyed afterwards.
+  Result<ImageHandle> addImage(const Image& image);
+  // A width x height texture that SceneViews draw into (SceneView::target) and
+  // ImageViews show, at the renderer's MSAA; transparent black until drawn into. One
+  // mip level. To resize it, add another and remove this one.
+  Result<ImageHandle> addRenderTarget(int width, int height);
+  // Frees the image (photo or render target) once no frame in flight uses it.
+  Status removeImage(ImageHandle handle);
+  // An image's size in pixels; an error for an unknown handle.
+  Result<glm::ivec2> imageSize(ImageHandle handle) const;
+  // Reads an image back (level 0; a render target as its last frame left it), waiting
+  // for the GPU work queued before: for tests and screenshots, not for every frame.
+  Result<Image> readImage(ImageHandle handle);
+
+  // Draws `views` in order into a width x height frame (pixels no view covers are
+  // `clearColor`, sRGB-encoded, opaque) and reads it back as renderToImage does. The
+  // views' render targets are updated as in a presented frame. Errors: as
+  // renderToImage's, an unknown handle, a camera that cannot project.
+  Result<Image> renderViews(const std::vector<View>& views, int width, int height,
+                            const glm::vec3& clearColor = glm::vec3(0.0f));
 
   // Validation-layer messages of severity warning or error since creation. Tests
   // turn validation on and assert the count is zero.

@@ -1,24 +1,29 @@
 // The Renderer's state, shared with Presenter (internal to pw_gpu).
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 
 #include "engine/gpu/context.h"
 #include "engine/gpu/frame_slot.h"
 #include "engine/gpu/gpu_scene.h"
+#include "engine/gpu/image_pass.h"
 #include "engine/gpu/pipelines.h"
 #include "engine/gpu/renderer.h"
 #include "engine/gpu/resources.h"
 #include "engine/gpu/scene_pass.h"
+#include "engine/gpu/upload_queue.h"
+#include "engine/gpu/view_image.h"
+#include "engine/gpu/view_recorder.h"
 
 namespace pw::engine {
 
-// Offscreen colour (multisampled), resolve and depth targets plus the read-back
-// buffer, for one frame size; remade when the size changes.
+// Offscreen frame targets plus the read-back buffer, for one frame size; remade when
+// the size changes.
 struct OffscreenTargets {
-  gpu::GpuImage color;
-  std::optional<gpu::GpuImage> resolve;  // when multisampled
+  gpu::GpuImage color;                // single-sampled: what views draw into and is read back
+  std::optional<gpu::GpuImage> msaa;  // multisampled colour for scene views, resolved into `color`
   gpu::GpuImage depth;
   gpu::Buffer readback;
   uint32_t width = 0;
@@ -29,12 +34,19 @@ struct OffscreenTargets {
 struct Renderer::Impl {
   std::unique_ptr<gpu::Context> context;
   std::unique_ptr<gpu::PipelineLibrary> pipelines;
+  std::unique_ptr<gpu::ImagePipelines> imagePipelines;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-  std::shared_ptr<const gpu::GpuScene> scene;  // frames in flight hold their own reference
+  // What the handles name, by id; frames in flight and running uploads hold their own
+  // references, so replacing or removing one never frees what the GPU still reads.
+  std::map<uint64_t, std::shared_ptr<const gpu::GpuScene>> scenes;
+  std::map<uint64_t, std::shared_ptr<const gpu::ViewImage>> images;
+  uint64_t nextHandle = 1;
+  SceneHandle defaultScene;  // setScene's
+  std::unique_ptr<gpu::UploadQueue> uploads;
   gpu::OwnedDescriptorPool framePool;
   gpu::FrameSlot frame;  // offscreen frames are synchronous: one slot
   std::optional<OffscreenTargets> offscreen;
-  gpu::DrawScratch scratch;
+  ViewRecorder recorder;  // offscreen frames'
   FrameStats stats;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "engine/gpu/barriers.h"
 #include "engine/gpu/vk_check.h"
 
 namespace pw::engine::gpu {
@@ -109,6 +110,48 @@ Result<GpuImage> createImage(const Context& context, const ImageSpec& spec) {
 
 uint32_t mipLevelCount(uint32_t width, uint32_t height) {
   return static_cast<uint32_t>(std::bit_width(std::max(width, height)));
+}
+
+bool canBlitMips(const Context& context, VkFormat format) {
+  VkFormatProperties props;
+  vkGetPhysicalDeviceFormatProperties(context.physicalDevice(), format, &props);
+  const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT |
+                                      VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  return (props.optimalTilingFeatures & needed) == needed;
+}
+
+void recordMipChain(VkCommandBuffer cmd, const GpuImage& image) {
+  const uint32_t levels = image.spec.mipLevels;
+  int32_t w = static_cast<int32_t>(image.spec.width), h = static_cast<int32_t>(image.spec.height);
+  for (uint32_t level = 1; level < levels; ++level) {
+    transitionImage(cmd, {image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 1});
+    const int32_t nw = std::max(w / 2, 1), nh = std::max(h / 2, 1);
+    VkImageBlit blit{};
+    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
+    blit.srcOffsets[1] = {w, h, 1};
+    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+    blit.dstOffsets[1] = {nw, nh, 1};
+    vkCmdBlitImage(cmd, image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   1, &blit, VK_FILTER_LINEAR);
+    w = nw;
+    h = nh;
+  }
+  const ImageTransition done[2] = {
+      {image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+       VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 0, levels - 1},
+      {image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+       VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+       levels - 1, 1},
+  };
+  if (levels > 1) {
+    transitionImages(cmd, done);
+  } else {
+    transitionImage(cmd, done[1]);
+  }
 }
 
 }  // namespace pw::engine::gpu

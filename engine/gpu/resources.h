@@ -59,4 +59,13 @@ Result<GpuImage> createImage(const Context& context, const ImageSpec& spec);
 // The number of mip levels of a full chain down to 1x1.
 uint32_t mipLevelCount(uint32_t width, uint32_t height);
 
+// Whether the device can make `format`'s mip chain by linear blits (else textures
+// get one level).
+bool canBlitMips(const Context& context, VkFormat format);
+
+// Fills the rest of the chain from level 0, which is in TRANSFER_DST_OPTIMAL after a
+// copy, by halving blits (linear filtering in linear light for sRGB formats), leaving
+// every level SHADER_READ_ONLY_OPTIMAL for the fragment shader.
+void recordMipChain(VkCommandBuffer cmd, const GpuImage& image);
+
 }  // namespace pw::engine::gpu

@@ -62,11 +62,10 @@ class DrawState {
 
 }  // namespace
 
-Status recordScenePass(VkCommandBuffer cmd, PipelineLibrary& pipelines, const GpuScene& scene, FrameSlot& slot,
-                       const SceneTargets& targets, const Camera& camera, const FrameSettings& settings,
-                       DrawScratch& scratch, FrameStats& stats) {
-  stats = {};
-  const int width = static_cast<int>(targets.extent.width), height = static_cast<int>(targets.extent.height);
+Status recordSceneView(VkCommandBuffer cmd, PipelineLibrary& pipelines, const GpuScene& scene, FrameSlot& slot,
+                       uint32_t viewIndex, const SceneTargets& targets, const ViewArea& where, const Camera& camera,
+                       const FrameSettings& settings, DrawScratch& scratch, FrameStats& stats) {
+  const int width = where.rect.width, height = where.rect.height;
   const glm::mat4 viewProjection = projectionMatrix(camera, width, height) * viewMatrix(camera);
   FrameUniforms uniforms{};
   uniforms.viewProjection = viewProjection;
@@ -74,30 +73,26 @@ Status recordScenePass(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
   const bool headlight = settings.headlight.value_or(scene.headlight);
   uniforms.headlightDirection = glm::vec4(forwardOf(camera), 0.0f);
   uniforms.lightCounts = glm::uvec4(scene.lightCounts.x, 0u, 0u, headlight ? 1u : 0u);
-  std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));  // host-coherent; the submit makes it visible
+  std::memcpy(slot.uniformsFor(viewIndex), &uniforms, sizeof(uniforms));  // host-coherent; the submit makes it visible
 
-  // Previous contents are discarded (UNDEFINED); the source stages order the layout
-  // transitions after the last frame's writes and copies, and after the swapchain
-  // acquire semaphore, which is waited for at the colour-output stage.
-  const VkPipelineStageFlags2 colorStages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT;
+  // Depth and the multisampled colour image start each view discarded (UNDEFINED); the
+  // source stages order the layout transitions after the writes of earlier views and
+  // frames.
   const VkPipelineStageFlags2 depthStages =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-  const ImageTransition colorIn{targets.color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                colorStages, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
   const ImageTransition depthIn{targets.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                                 depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, depthStages,
                                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
                                 VK_IMAGE_ASPECT_DEPTH_BIT};
   if (targets.resolve != VK_NULL_HANDLE) {
-    ImageTransition resolveIn = colorIn;
-    resolveIn.image = targets.resolve;
-    const ImageTransition all[3] = {colorIn, depthIn, resolveIn};
-    transitionImages(cmd, all);
-  } else {
+    const ImageTransition colorIn{targets.color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
     const ImageTransition both[2] = {colorIn, depthIn};
     transitionImages(cmd, both);
+  } else {
+    transitionImage(cmd, depthIn);
   }
 
   const glm::vec3 background =
@@ -121,7 +116,7 @@ Status recordScenePass(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, targets.extent};
+  rendering.renderArea = where.area;  // the clears and the resolve stay inside it
   rendering.layerCount = 1;
   rendering.colorAttachmentCount = 1;
   rendering.pColorAttachments = &color;
@@ -130,16 +125,17 @@ Status recordScenePass(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
 
   Status status;
   if (!scene.opaque.empty() || !scene.transparent.empty()) {
-    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, targets.extent};
+    const VkViewport viewport{float(where.rect.x), float(where.rect.y), float(width), float(height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdSetScissor(cmd, 0, 1, &where.area);
     const VkDeviceSize zero = 0;
     const VkBuffer vertexBuffer = scene.vertices.get();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &zero);
     vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
     const VkDescriptorSet sets[] = {slot.frameSet, scene.sceneSet};
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout(), PW_SET_FRAME, 2, sets, 0, nullptr);
+    const uint32_t uniformsOffset = slot.dynamicOffset(viewIndex);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.layout(), PW_SET_FRAME, 2, sets, 1,
+                            &uniformsOffset);
 
     const Frustum frustum = frustumFromViewProjection(viewProjection);
     DrawState state(cmd, pipelines, scene, targets);
