@@ -45,7 +45,7 @@ TEST_F(BuiltModel, LoadsInView3dsceneAndItsPhotoViewMatchesOurs) {
   if (!onPath("view3dscene") || !onPath("xvfb-run")) GTEST_SKIP() << "view3dscene or xvfb-run is not installed";
   const fs::path shot = dir_ / "view3dscene.png", ours = dir_ / "photowalk.png";
   const fs::path log = dir_ / "home" / ".config" / "view3dscene" / "view3dscene.log";
-  const CommandRun viewer = shell("HOME='" + (dir_ / "home").string() + "' xvfb-run -a -s '-screen 0 1280x1024x24' view3dscene '" +
+  const CommandRun viewer = shell("HOME='" + (dir_ / "home").string() + "' xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' view3dscene '" +
                                   (dir_ / "corridor.wrl").string() + "' --geometry 640x360 --screenshot 0 '" +
                                   shot.string() + "'");
   ASSERT_EQ(viewer.exitCode, 0) << viewer.output;

@@ -230,7 +230,7 @@ TEST(VrmlViewer, WrittenFilesLoadInView3dsceneWithoutWarnings) {
     }
   }
   ASSERT_TRUE(writeFileAtomic(root / "run.sh", script).ok());
-  const std::string command = "xvfb-run -a -s '-screen 0 1920x1080x24' sh '" + (root / "run.sh").string() + "'";
+  const std::string command = "xvfb-run -a -s '-screen 0 1920x1080x24 -noreset' sh '" + (root / "run.sh").string() + "'";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
 
   for (const Written& w : written) {
