@@ -75,21 +75,28 @@ Status recordSceneView(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
   uniforms.lightCounts = glm::uvec4(scene.lightCounts.x, 0u, 0u, headlight ? 1u : 0u);
   std::memcpy(slot.uniformsFor(viewIndex), &uniforms, sizeof(uniforms));  // host-coherent; the submit makes it visible
 
-  // Depth and the multisampled colour image start each view discarded (UNDEFINED); the
-  // source stages order the layout transitions after the writes of earlier views and
-  // frames.
+  // Depth and the multisampled colour image start each view discarded (UNDEFINED), and
+  // so does the result with discardResult; the source stages order the layout
+  // transitions after the writes (and read-back copies) of earlier views and frames,
+  // and after a swapchain's acquire semaphore, waited for at the colour-output stage.
   const VkPipelineStageFlags2 depthStages =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
   const ImageTransition depthIn{targets.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                                 depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, depthStages,
                                 VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
                                 VK_IMAGE_ASPECT_DEPTH_BIT};
-  if (targets.resolve != VK_NULL_HANDLE) {
-    const ImageTransition colorIn{targets.color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
-    const ImageTransition both[2] = {colorIn, depthIn};
+  const ImageTransition colorIn{targets.color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
+  ImageTransition resultIn = colorIn;
+  resultIn.image = targets.resolve;
+  const bool multisampled = targets.resolve != VK_NULL_HANDLE;
+  if (multisampled && targets.discardResult) {
+    const ImageTransition all[3] = {colorIn, depthIn, resultIn};
+    transitionImages(cmd, all);
+  } else if (multisampled || targets.discardResult) {
+    const ImageTransition both[2] = {colorIn, depthIn};  // colour: multisampled, or the result itself
     transitionImages(cmd, both);
   } else {
     transitionImage(cmd, depthIn);

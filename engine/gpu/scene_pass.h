@@ -30,6 +30,10 @@ struct SceneTargets {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkExtent2D extent{0, 0};
   bool encodeSrgbInShader = false;  // a UNORM target: the clear colour is encoded here (pipelines do it by format)
+  // The single-sampled result starts UNDEFINED (its contents discarded, last used at
+  // the colour-output or copy stage) and is taken to COLOR_ATTACHMENT_OPTIMAL in the
+  // view's own barrier: a frame whose first view covers it all needs no other.
+  bool discardResult = false;
 };
 
 // Reused between frames so that recording allocates nothing once warmed up.
@@ -46,11 +50,12 @@ struct ViewArea {
 };
 
 // Records the view into `cmd` (begun) and writes its uniforms to slot view
-// `viewIndex` (reserved). The single-sampled result (resolve, or colour when
-// single-sampled) must be in COLOR_ATTACHMENT_OPTIMAL with earlier writes to it
-// ordered before (the caller's barriers); the depth and multisampled colour images'
-// contents are discarded (each view clears its area). Within `area` the result is
-// cleared to the background and drawn; outside it is kept. Adds to `stats`.
+// `viewIndex` (reserved). Unless targets.discardResult, the single-sampled result
+// (resolve, or colour when single-sampled) must be in COLOR_ATTACHMENT_OPTIMAL with
+// earlier writes to it ordered before (the caller's barriers); the depth and
+// multisampled colour images' contents are discarded (each view clears its area).
+// Within `area` the result is cleared to the background and drawn; outside it is
+// kept. Adds to `stats`.
 Status recordSceneView(VkCommandBuffer cmd, PipelineLibrary& pipelines, const GpuScene& scene, FrameSlot& slot,
                        uint32_t viewIndex, const SceneTargets& targets, const ViewArea& where, const Camera& camera,
                        const FrameSettings& settings, DrawScratch& scratch, FrameStats& stats);

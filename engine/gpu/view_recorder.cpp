@@ -128,25 +128,27 @@ Status ViewRecorder::record(VkCommandBuffer cmd, Renderer::Impl& renderer, gpu::
       prepared_.begin(), prepared_.end(), [](const Prepared& p) { return std::holds_alternative<SceneView>(*p.view); }));
   PW_TRY(slot.reserveViews(*renderer.context, sceneViews));
 
-  // The frame image's earlier contents are discarded; the source stages order the
-  // transition after the last frame's writes and copies (read-back, capture) and
-  // after the swapchain's acquire semaphore, waited for at the colour-output stage.
-  gpu::transitionImage(cmd, {target.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
-  // A first scene view over the whole frame clears it itself (the walkthrough's frame).
+  // A first scene view over the whole frame takes the frame image in and clears it
+  // itself (the walkthrough's frame: one barrier, one rendering instance). Otherwise
+  // the image's earlier contents are discarded here and it is cleared; the source
+  // stages order that after the last frame's writes and copies (read-back, capture)
+  // and after the swapchain's acquire semaphore, waited for at the colour-output stage.
   const bool firstCoversFrame = !prepared_.empty() && std::holds_alternative<SceneView>(*prepared_[0].view) &&
                                 !prepared_[0].image && prepared_[0].where.area.extent.width == target.extent.width &&
                                 prepared_[0].where.area.extent.height == target.extent.height;
   bool written = false;
   if (!firstCoversFrame) {
+    gpu::transitionImage(cmd, {target.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
     clearFrame(cmd, target, clearColor);
     written = true;
   }
 
   uint32_t sceneIndex = 0;
   for (const Prepared& p : prepared_) {
+    const bool first = !written;  // then the frame image is still UNDEFINED (firstCoversFrame)
     if (written) colorWritesBeforeNextView(cmd);
     written = true;
     ++stats_.views;
@@ -183,6 +185,7 @@ Status ViewRecorder::record(VkCommandBuffer cmd, Renderer::Impl& renderer, gpu::
         targets.format = target.format;
         targets.extent = target.extent;
         targets.encodeSrgbInShader = target.encodeSrgbInShader;
+        targets.discardResult = first;
       }
       const Status recorded = gpu::recordSceneView(cmd, *renderer.pipelines, *p.scene, slot, sceneIndex++, targets,
                                                    p.where, view->camera, view->settings, scratch_, stats_);
