@@ -3,8 +3,9 @@
 #include <string>
 
 #include "editor/cli/command.h"
+#include "editor/walk/replay.h"
+#include "editor/walk/walk_window.h"
 #include "engine/io/model_io.h"
-#include "editor/walk_window.h"
 
 namespace pw::editor {
 namespace {
@@ -33,7 +34,7 @@ constexpr const char* kUsage =
     "fails the command (exit 1) when the window closes.\n";
 
 int runWalk(Args& args) {
-  WalkOptions options;
+  walk::WalkOptions options;
   const auto sizeText = args.value("--size");
   const auto replayPath = args.value("--replay");
   const auto tracePath = args.value("--trace");
@@ -78,7 +79,7 @@ int runWalk(Args& args) {
   if (!scene) return fail(scene.message());
   options.title = "photowalk - " + (scene->title.empty() ? positionals[0] : scene->title);
 
-  auto report = runWalkWindow(*scene, options);
+  auto report = walk::runWalkWindow(*scene, options);
   if (!report) return fail(report.message());
   std::printf("walk: %ld frames drawn, %ld simulated; frame time median %.2f ms (%.1f fps), mean %.2f ms; %s, %dx MSAA, %s, %s\n",
               report->framesDrawn, report->framesSimulated, report->medianFrameMs,

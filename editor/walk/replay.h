@@ -1,14 +1,7 @@
-// Replay scripts: a deterministic walk for tests and measurements.
-//
-// One event per line, `FRAME WHAT ...`, FRAME counting simulated frames of 1/60 s
-// from 0 whatever the real frame rate; '#' starts a comment:
-//   10 key W down          (key names as GLFW names them: W, A, S, D, UP, LEFT_SHIFT,
-//   70 key W up             PAGE_UP, PAGE_DOWN, HOME, F12, H, TAB, ...)
-//   80 mouse 120 -30       (pointer motion in pixels, as if the cursor were captured)
-//   90 viewpoint 2         (go to the second viewpoint, counting from 1 as render does)
-//   95 resize 800 600      (resize the window)
-//  100 capture out.png     (save the frame drawn at this frame)
-//  120 quit
+// The walkthrough's replay scripts: the shell's events (editor/app/replay.h: key,
+// mouse, resize, capture, quit, ...) and the walk's own:
+//   90 viewpoint 2         go to the second viewpoint, counting from 1 as render does
+// README "Replay scripts and traces" shows a whole script.
 #pragma once
 
 #include <filesystem>
@@ -16,27 +9,22 @@
 #include <vector>
 
 #include "base/result.h"
+#include "editor/app/replay.h"
 
 namespace pw::walk {
 
-struct ReplayEvent {
-  enum class Kind { kKey, kMouse, kViewpoint, kResize, kCapture, kQuit };
-  int frame = 0;
-  Kind kind = Kind::kQuit;
-  std::string name;  // key name, or capture file
-  bool down = false;  // key
-  double dx = 0, dy = 0;  // mouse; resize: width, height
-  int index = 0;          // viewpoint
+// `viewpoint N`: ModeEvent::value holds one (N from 1).
+struct ViewpointEvent {
+  int number = 1;
 };
 
-// Parses a replay script; events come back sorted by frame (stable). Errors give
-// file:line and what was expected. Capture paths are relative to the script.
-Result<std::vector<ReplayEvent>> readReplay(const std::filesystem::path& path);
-Result<std::vector<ReplayEvent>> parseReplay(const std::string& text, const std::string& nameForErrors,
-                                             const std::filesystem::path& baseDir);
+// The walk's own event kinds, for app::parseReplay.
+std::vector<app::ReplayVerb> replayVerbs();
 
-// GLFW's key code for a name ("W", "LEFT_SHIFT", "PAGE_UP", "F12"), -1 if unknown.
-// (The codes are GLFW's, but the table lives here so that parsing needs no GLFW.)
-int keyCodeFromName(const std::string& name);
+// Parses a walk's replay script (app::parseReplay with the walk's verbs): events sorted
+// by frame, errors with file:line and what was expected, paths relative to the script.
+Result<std::vector<app::ReplayEvent>> parseReplay(const std::string& text, const std::string& nameForErrors,
+                                                  const std::filesystem::path& baseDir);
+Result<std::vector<app::ReplayEvent>> readReplay(const std::filesystem::path& path);
 
 }  // namespace pw::walk

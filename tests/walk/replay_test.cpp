@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "editor/app/key_names.h"
+
 namespace pw::walk {
 namespace {
 
@@ -13,12 +15,14 @@ TEST(Replay, ParsesEveryEventKind) {
   ASSERT_TRUE(events.ok()) << events.message();
   ASSERT_EQ(events->size(), 7u);
   EXPECT_EQ((*events)[0].frame, 5);  // sorted by frame
-  EXPECT_EQ((*events)[0].kind, ReplayEvent::Kind::kMouse);
-  EXPECT_DOUBLE_EQ((*events)[0].dx, 12.5);
-  EXPECT_EQ((*events)[1].name, "W");
-  EXPECT_TRUE((*events)[1].down);
-  EXPECT_EQ((*events)[5].name, "/tmp/base/shots/a.png");
-  EXPECT_EQ((*events)[6].kind, ReplayEvent::Kind::kQuit);
+  ASSERT_TRUE(std::holds_alternative<app::PointerMotionEvent>((*events)[0].what));
+  EXPECT_DOUBLE_EQ(std::get<app::PointerMotionEvent>((*events)[0].what).dxPx, 12.5);
+  ASSERT_TRUE(std::holds_alternative<app::KeyEvent>((*events)[1].what));
+  EXPECT_EQ(std::get<app::KeyEvent>((*events)[1].what).key, app::keyCodeFromName("W"));
+  EXPECT_TRUE(std::get<app::KeyEvent>((*events)[1].what).down);
+  ASSERT_TRUE(std::holds_alternative<app::CaptureRequest>((*events)[5].what));
+  EXPECT_EQ(std::get<app::CaptureRequest>((*events)[5].what).path, "/tmp/base/shots/a.png");
+  EXPECT_TRUE(std::holds_alternative<app::QuitRequest>((*events)[6].what));
 }
 
 TEST(Replay, ErrorsGiveLineAndWhatWasExpected) {
@@ -34,11 +38,11 @@ TEST(Replay, ErrorsGiveLineAndWhatWasExpected) {
 }
 
 TEST(Replay, KeyNamesFollowGlfw) {
-  EXPECT_EQ(keyCodeFromName("W"), 87);
-  EXPECT_EQ(keyCodeFromName("LEFT_SHIFT"), 340);
-  EXPECT_EQ(keyCodeFromName("PAGE_UP"), 266);
-  EXPECT_EQ(keyCodeFromName("F12"), 301);
-  EXPECT_EQ(keyCodeFromName("w"), -1);
+  EXPECT_EQ(app::keyCodeFromName("W"), 87);
+  EXPECT_EQ(app::keyCodeFromName("LEFT_SHIFT"), 340);
+  EXPECT_EQ(app::keyCodeFromName("PAGE_UP"), 266);
+  EXPECT_EQ(app::keyCodeFromName("F12"), 301);
+  EXPECT_EQ(app::keyCodeFromName("w"), -1);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The walkthrough window: GLFW + the Vulkan swapchain (engine::Presenter) + an ImGui
-// overlay, driving pw::walk's avatar at a fixed simulation step of 1/60 s.
+// `photowalk walk`: the app shell's window (editor/app/shell.h) with the walkthrough
+// (walk_mode.h) as its one mode, at a fixed simulation step of 1/60 s.
 #pragma once
 
 #include <filesystem>
@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "base/result.h"
-#include "editor/walk/replay.h"
+#include "editor/app/replay.h"
 #include "engine/scene/scene.h"
 
-namespace pw::editor {
+namespace pw::walk {
 
 struct WalkOptions {
   int width = 1280;
@@ -22,9 +22,9 @@ struct WalkOptions {
   bool perPixelLighting = false;  // true: also on lavapipe, at its cost
   double speedScale = 1.0;
   std::string title = "photowalk";
-  std::optional<std::vector<walk::ReplayEvent>> replay;  // set: deterministic, input ignored
-  std::optional<std::filesystem::path> tracePath;        // CSV, one row per simulated frame
-  std::filesystem::path screenshotDir = ".";             // F12
+  std::optional<std::vector<app::ReplayEvent>> replay;  // set: deterministic, input ignored (readReplay)
+  std::optional<std::filesystem::path> tracePath;       // CSV, one row per simulated frame
+  std::filesystem::path screenshotDir = ".";            // F12
   bool showOverlay = true;
 };
 
@@ -41,7 +41,7 @@ struct WalkReport {
 };
 
 // Opens the window and walks until it is closed (or the replay quits). Errors: no
-// display, no Vulkan device that can present, a capture that cannot be written.
+// display, no Vulkan device that can present, a replay capture that cannot be written.
 Result<WalkReport> runWalkWindow(const engine::Scene& scene, const WalkOptions& options);
 
-}  // namespace pw::editor
+}  // namespace pw::walk
