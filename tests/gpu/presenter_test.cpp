@@ -1,12 +1,14 @@
-// Presenting to a real window: GLFW (here in the test only; pw_gpu never sees it)
-// opens an X11 window, ctest runs this under xvfb-run, lavapipe presents to it.
-#define GLFW_INCLUDE_VULKAN
+// Presenting to a real window: the app shell's Window (editor/app: GLFW here and in
+// the shell only; pw_gpu never sees it) opens an X11 window with its Vulkan surface,
+// ctest runs this under xvfb-run, lavapipe presents to it.
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
 
 #include <gtest/gtest.h>
 
+#include "editor/app/glfw_session.h"
+#include "editor/app/window.h"
 #include "engine/gpu/presenter.h"
 #include "engine/scene/sample_scene.h"
 #include "tests/gpu/renderer_fixture.h"
@@ -16,52 +18,41 @@ namespace {
 
 class PresenterTest : public ::testing::Test {
  protected:
-  // GLFW is initialised once for the binary: terminating and re-initialising it
-  // between tests sometimes failed to reach the X server again.
-  static void SetUpTestSuite() { glfwReady_ = std::getenv("DISPLAY") && glfwInit(); }
-  static void TearDownTestSuite() {
-    if (glfwReady_) glfwTerminate();
-    glfwReady_ = false;
-  }
-
+  // GLFW stays initialised for the binary (app::initGlfw): terminating and
+  // re-initialising it between tests sometimes failed to reach the X server again.
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (ctest runs this test under xvfb-run)";
-    ASSERT_TRUE(glfwReady_) << "GLFW cannot reach the X display";
-    ASSERT_TRUE(glfwVulkanSupported());
-    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-    window_ = glfwCreateWindow(320, 240, "photowalk presenter test", nullptr, nullptr);
-    ASSERT_NE(window_, nullptr);
-    uint32_t count = 0;
-    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    auto extensions = app::windowInstanceExtensions();
+    ASSERT_TRUE(extensions.ok()) << extensions.message();
     RendererOptions options;
     options.forceCpu = true;
     options.validation = RendererOptions::Validation::kOn;
-    for (uint32_t i = 0; i < count; ++i) options.instanceExtensions.emplace_back(names[i]);
+    options.instanceExtensions = *extensions;
     auto renderer = Renderer::create(options);
     ASSERT_TRUE(renderer.ok()) << renderer.message();
     renderer_ = std::move(*renderer);
-    ASSERT_EQ(glfwCreateWindowSurface(renderer_->instance(), window_, nullptr, &surface_), VK_SUCCESS);
+    auto window = app::Window::create({320, 240, "photowalk presenter test"}, renderer_->instance());
+    ASSERT_TRUE(window.ok()) << window.message();
+    window_ = std::move(*window);
+    surface_ = window_->surface();
   }
 
   void TearDown() override {
     presenter_.reset();  // before the surface, which is before the renderer's instance
-    if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(renderer_->instance(), surface_, nullptr);
+    window_.reset();
     if (renderer_) {
       EXPECT_EQ(renderer_->validationMessageCount(), 0u) << test::validationReport(*renderer_);
     }
     renderer_.reset();
-    if (window_) glfwDestroyWindow(window_);
   }
 
   std::pair<int, int> framebufferSize() {
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window_, &w, &h);
-    return {w, h};
+    const glm::ivec2 size = window_->framebufferSize();
+    return {size.x, size.y};
   }
 
-  static inline bool glfwReady_ = false;
-  GLFWwindow* window_ = nullptr;
   std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<app::Window> window_;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   std::unique_ptr<Presenter> presenter_;
 };
@@ -101,8 +92,7 @@ TEST_F(PresenterTest, DrawsFramesWithTheOverlayAndSurvivesResizeAndSceneChange) 
   smaller.shapes.resize(5);
   ASSERT_TRUE(renderer_->setScene(smaller).ok());
 
-  glfwSetWindowSize(window_, 400, 300);
-  for (int i = 0; i < 20 && framebufferSize() != std::pair(400, 300); ++i) glfwWaitEventsTimeout(0.05);
+  window_->resizeAndWait(400, 300);
   const auto [w2, h2] = framebufferSize();
   presenter_->resize(w2, h2);
   for (int i = 0; i < 4; ++i) {
