@@ -77,8 +77,9 @@ Result<std::unique_ptr<ImagePipelines>> ImagePipelines::create(const Context& co
   return lib;
 }
 
-Result<VkPipeline> ImagePipelines::pipeline(VkFormat format) {
-  if (auto found = pipelines_.find(format); found != pipelines_.end()) return found->second.get();
+Result<VkPipeline> ImagePipelines::pipeline(VkFormat format, bool blended) {
+  const auto key = std::pair(format, blended);
+  if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second.get();
 
   const VkBool32 encodeSrgb = isSrgbFormat(format) ? VK_FALSE : VK_TRUE;
   const VkSpecializationMapEntry entry{PW_SPEC_ENCODE_SRGB, 0, sizeof(VkBool32)};
@@ -101,7 +102,7 @@ Result<VkPipeline> ImagePipelines::pipeline(VkFormat format) {
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   VkPipelineColorBlendAttachmentState blend{};
-  blend.blendEnable = VK_TRUE;
+  blend.blendEnable = blended ? VK_TRUE : VK_FALSE;
   blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
   blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
   blend.colorBlendOp = VK_BLEND_OP_ADD;
@@ -135,11 +136,12 @@ Result<VkPipeline> ImagePipelines::pipeline(VkFormat format) {
   info.layout = layout_.get();
   VkPipeline pipeline = VK_NULL_HANDLE;
   PW_VK_CHECK(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  return pipelines_.emplace(format, OwnedPipeline(context_.device(), pipeline)).first->second.get();
+  return pipelines_.emplace(key, OwnedPipeline(context_.device(), pipeline)).first->second.get();
 }
 
 Status recordImageView(VkCommandBuffer cmd, ImagePipelines& pipelines, const ImageDraw& draw) {
-  auto pipeline = pipelines.pipeline(draw.format);
+  // Alpha 1 everywhere (an opaque image, an opaque background): nothing to blend with.
+  auto pipeline = pipelines.pipeline(draw.format, !(draw.opaqueImage && draw.background.a >= 1.0f));
   if (!pipeline) return pipeline.error();
   VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   color.imageView = draw.target;

@@ -81,6 +81,8 @@ Result<std::shared_ptr<const ViewImage>> ViewImage::upload(const Context& contex
   if (!stagingBuffer) return stagingBuffer.error();
   const auto staging = std::make_shared<const Buffer>(std::move(*stagingBuffer));
   std::memcpy(staging->mapped, image.rgba.data(), bytes);
+  out->opaque = true;
+  for (size_t i = 3; i < image.rgba.size() && out->opaque; i += 4) out->opaque = image.rgba[i] == 255;
   PW_TRY(describe(context, pipelines, *out));
 
   const auto keepAlive = std::make_shared<std::pair<std::shared_ptr<const Buffer>, std::shared_ptr<const ViewImage>>>(

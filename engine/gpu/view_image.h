@@ -39,6 +39,7 @@ struct ViewImage {
   uint32_t width() const { return color.spec.width; }
   uint32_t height() const { return color.spec.height; }
   bool isRenderTarget() const { return depth.has_value(); }
+  bool opaque = false;  // a photo whose every alpha is 255 (render targets: false)
   VkDescriptorSet set(ImageFilter filter) const { return filter == ImageFilter::kNearest ? nearestSet : smoothSet; }
 
   GpuImage color;                   // kViewImageFormat, sampled

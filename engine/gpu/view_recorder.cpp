@@ -206,6 +206,7 @@ Status ViewRecorder::record(VkCommandBuffer cmd, Renderer::Impl& renderer, gpu::
       draw.area = p.where.area;
       draw.set = p.image->set(resolvedFilter(imageView.filter, imageView.transform.scale));
       draw.imageSize = {p.image->width(), p.image->height()};
+      draw.opaqueImage = p.image->opaque;
       draw.transform = imageView.transform;
       draw.background = imageView.background;
       slot.inFlight.push_back(p.image);

@@ -285,6 +285,15 @@ TEST_F(ViewsOffscreenTest, BackgroundBeyondTheImageIsDrawnOrLeftAsItWas) {
   EXPECT_EQ(kept.pixel(5, 5)[0], 255);  // the frame's clear colour shows through
   EXPECT_EQ(kept.pixel(5, 5)[1], 0);
   EXPECT_EQ(kept.pixel(25, 25)[1], 255);
+
+  // A translucent image blends over the frame in linear light: half-covering white
+  // over black is linear 0.5, 188/255 encoded.
+  auto translucent = renderer().addImage(makeImage(4, 4, 0xffffff80));
+  ASSERT_TRUE(translucent.ok()) << translucent.message();
+  const Image blended = render({ImageView{*translucent, t, {}, ImageFilter::kAuto, {0.0f, 0.0f, 0.0f, 1.0f}}}, 64, 64);
+  EXPECT_NEAR(blended.pixel(25, 25)[0], 188, 2);
+  EXPECT_EQ(blended.pixel(25, 25)[3], 255);  // the frame stays opaque
+  EXPECT_EQ(blended.pixel(5, 5)[0], 0);
 }
 
 // A 12-megapixel photo: uploaded with its mip chain, fitted into a small rectangle and
