@@ -247,9 +247,10 @@ void WalkMode::drawUi(app::Shell& shell) {
   }
   if (showHelp_) {
     ImGui::Begin("Keys", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted("click      capture the mouse (look around)");
+    ImGui::Text("Esc        release the mouse; again: %s",
+                options_.escapeTo.empty() ? "quit" : ("back to " + options_.escapeTo).c_str());
     ImGui::TextUnformatted(
-        "click      capture the mouse (look around)\n"
-        "Esc        release the mouse; again: quit\n"
         "W/S, Up/Down     walk forward / back\n"
         "A/D, Left/Right  step left / right\n"
         "Shift      run\n"

@@ -173,6 +173,30 @@ TEST_F(ShellTest, WalkKeepsItsPlaceWhileAnotherModeRuns) {
   EXPECT_EQ(coveredByUi, 196 * 96);
 }
 
+// In the editor, Esc in the walk (the cursor free) goes back to the editor
+// (WalkModeOptions::escapeTo); a mode's request switches at once.
+TEST_F(ShellTest, EscapeInTheWalkGoesToTheModeItNames) {
+  const engine::Scene scene = engine::makeSampleScene();
+  auto shell = Shell::create(options("0 mode other\n2 mode walk\n5 key ESCAPE down\n6 key ESCAPE up\n9 quit\n"));
+  ASSERT_TRUE(shell.ok()) << shell.message();
+  walk::WalkModeOptions walkOptions;
+  walkOptions.escapeTo = "other";
+  walk::WalkMode walkMode(scene, walkOptions);
+  OtherMode other;
+  ASSERT_TRUE((*shell)->addMode(walkMode).ok());
+  ASSERT_TRUE((*shell)->addMode(other).ok());
+  auto report = (*shell)->run("walk");
+  ASSERT_TRUE(report.ok()) << report.message();
+  const auto rows = trace();
+  ASSERT_EQ(rows.size(), 10u);
+  for (int f = 0; f <= 9; ++f) EXPECT_EQ(rows[f]["mode"], f >= 2 && f < 5 ? "walk" : "other") << "frame " << f;
+  EXPECT_EQ(other.enters, 2);
+  EXPECT_EQ(other.leaves, 1);
+  ASSERT_EQ(other.keys.size(), 1u);  // the walk took Esc down; its release came to the other
+  EXPECT_EQ(other.keys[0].key, GLFW_KEY_ESCAPE);
+  EXPECT_FALSE(other.keys[0].down);
+}
+
 TEST_F(ShellTest, UnknownModeOrWalkEventEndsTheRunWithAnError) {
   const engine::Scene scene = engine::makeSampleScene();
   {
