@@ -49,6 +49,8 @@ class WalkMode : public app::AppMode {
   // The camera the walk draws with now (mid-glide between viewpoints too).
   engine::Camera currentCamera() const;
   int viewpoint() const { return viewpoint_; }  // from 0
+  // The scene uploaded by open(), for an owner that replaces the walk to remove.
+  engine::SceneHandle sceneHandle() const { return sceneHandle_; }
 
  private:
   struct Transition {

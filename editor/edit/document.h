@@ -1,0 +1,114 @@
+// What the editor edits: one shot (metrology/shot.h) with its photo, where it is saved,
+// what opening it found out, and its undo history. No window, no GPU: tested headless
+// (tests/edit/document_test.cpp).
+//
+//   auto doc = Document::open("corridor.png", {});   // corners detected, or a default box
+//   Shot s = doc->shot();  s.cornersPx[P5] += glm::dvec2(3, 0);
+//   doc->apply(s, "move P5");                         // one undo step
+//   doc->undo();  doc->redo();  doc->save();          // writeShotFile, atomically
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "base/result.h"
+#include "metrology/shot.h"
+
+namespace pw::edit {
+
+// Exact equality of every field writeShotFile writes (and of the image size): two
+// shots that compare equal save to the same bytes.
+bool sameShot(const metrology::Shot& a, const metrology::Shot& b);
+
+// Undo and redo as whole shots: a shot is a few hundred bytes, so each step keeps the
+// state before and after, and undoing everything then redoing everything restores
+// the very same numbers (hence byte-identical files).
+class History {
+ public:
+  struct Step {
+    metrology::Shot before, after;
+    std::string label;  // "move P5", "focal length"
+  };
+  // Records a step; the steps that were undone are dropped (no redo past a new edit).
+  void push(Step step);
+  // The step to undo (its `before` is the state to restore), or none; moves back.
+  const Step* undo();
+  // The step to redo (its `after` is the state to restore), or none; moves forward.
+  const Step* redo();
+  bool canUndo() const { return next_ > 0; }
+  bool canRedo() const { return next_ < steps_.size(); }
+  size_t size() const { return steps_.size(); }
+
+ private:
+  std::vector<Step> steps_;
+  size_t next_ = 0;  // steps_[0, next_) are done
+};
+
+// The editor's defaults for a photo without a shot file.
+inline constexpr double kDefaultCameraHeightM = 1.6;
+
+struct OpenOptions {
+  // Where Save writes a shot for a photo opened alone; empty: beside the photo, as
+  // STEM.shot.json. (A shot file is saved where it was read.)
+  std::filesystem::path photoShotPath;
+};
+
+class Document {
+ public:
+  // Opens a shot file (*.json: modeling::loadShot) or a photo (PNG/JPEG). A photo gets
+  // its corners from automatic detection (metrology/detect), with the confidences;
+  // where none is found, a default box from the image size; the camera height is then
+  // kDefaultCameraHeightM until set. notes() says what was assumed. Errors: a file
+  // that cannot be read, a shot file with errors (one line naming the problem).
+  static Result<Document> open(const std::filesystem::path& path, const OpenOptions& options = {});
+
+  const metrology::Shot& shot() const { return shot_; }
+  const cv::Mat& photo() const { return photo_; }  // BGR, 8 bit
+  const std::filesystem::path& path() const { return path_; }  // where save() writes
+  // Unsaved changes: the shot differs from the file at path() (always, for a photo
+  // never saved).
+  bool dirty() const { return !saved_ || !sameShot(*saved_, shot_); }
+  // One line each: what opening found or assumed ("corners detected automatically, ...").
+  const std::vector<std::string>& notes() const { return notes_; }
+  // Per corner, the detection's confidence (0..1), while the corner is where detection
+  // put it; unset for corners from a file, a default box, or moved since.
+  std::optional<double> detectionConfidence(int corner) const;
+
+  // Makes `after` the shot, as one undo step from the current one; nothing when equal.
+  void apply(const metrology::Shot& after, std::string label);
+  // An edit in progress (a drag): setLive changes the shot without a step; commitLive
+  // then records one step from `before` (the shot when the edit began) to the current
+  // shot, nothing when they are equal.
+  void setLive(const metrology::Shot& live) { shot_ = live; }
+  void commitLive(const metrology::Shot& before, std::string label);
+  bool undo();
+  bool redo();
+  const History& history() const { return history_; }
+
+  // Writes the shot to path() atomically (modeling::writeShotFile; the focal length in
+  // the units it came in); the document is then clean.
+  Status save();
+  // Writes the shot to `path` without changing the document's path or state.
+  Status saveCopy(const std::filesystem::path& path) const;
+
+ private:
+  std::filesystem::path path_;
+  metrology::Shot shot_;
+  std::optional<metrology::Shot> saved_;
+  cv::Mat photo_;
+  std::vector<std::string> notes_;
+  std::array<std::optional<double>, metrology::kCornerCount> confidence_{};
+  std::array<glm::dvec2, metrology::kCornerCount> detectedPx_{};
+  History history_;
+};
+
+// A default box for a photo where no corridor was found: the far wall a centred
+// rectangle a fifth of the image, the near corners a tenth in from its edges.
+std::array<glm::dvec2, metrology::kCornerCount> defaultCorners(int imageWidth, int imageHeight);
+
+}  // namespace pw::edit

@@ -1,0 +1,406 @@
+#include "editor/edit/edit_mode.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "editor/app/shell.h"
+#include "editor/edit/model_walk.h"
+#include "editor/edit/warnings.h"
+
+namespace pw::edit {
+namespace fs = std::filesystem;
+using app::Overloaded;
+using metrology::kCornerCount;
+using metrology::Shot;
+using nlohmann::ordered_json;
+
+namespace {
+
+constexpr double kGrabRadiusPx = 12;   // a press this near a handle takes it
+constexpr double kSlowFactor = 0.1;    // Shift while dragging
+constexpr double kNudgePx = 1.0;       // arrow keys; Shift: a tenth
+constexpr long kNudgeLoupeSteps = 60;  // the loupe stays a second after a nudge
+
+engine::Image imageFromBgr(const cv::Mat& bgr) {
+  cv::Mat rgba;
+  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
+  engine::Image image;
+  image.width = rgba.cols;
+  image.height = rgba.rows;
+  image.rgba.resize(static_cast<size_t>(rgba.cols) * rgba.rows * 4);
+  for (int y = 0; y < rgba.rows; ++y) {
+    std::copy_n(rgba.ptr<uint8_t>(y), static_cast<size_t>(rgba.cols) * 4, image.rgba.data() + size_t(y) * rgba.cols * 4);
+  }
+  return image;
+}
+
+ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y}); }
+
+}  // namespace
+
+EditMode::EditMode(EditModeOptions options, ModelWalk& walk) : options_(std::move(options)), walk_(walk) {}
+
+std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
+  return {{"save-copy", [scriptDir](std::istream& words) -> Result<std::any> {
+             std::string file;
+             if (!(words >> file)) return makeError("expected 'save-copy FILE.json'");
+             fs::path path(file);
+             if (path.is_relative()) path = scriptDir / path;
+             return std::any(SaveCopyEvent{path});
+           }}};
+}
+
+Status EditMode::open(app::Shell& shell) {
+  if (options_.file) openFile(shell, *options_.file);
+  return {};
+}
+
+void EditMode::openFile(app::Shell& shell, const fs::path& path) {
+  auto doc = Document::open(path, options_.open);
+  if (!doc) {
+    openError_ = doc.message();
+    shell.showMessage("error: " + openError_);
+    return;
+  }
+  engine::ImageHandle photo;
+  auto uploaded = shell.renderer().addImage(imageFromBgr(doc->photo()));
+  if (!uploaded) {
+    openError_ = path.string() + ": the photo cannot be shown: " + uploaded.message();
+    shell.showMessage("error: " + openError_);
+    return;
+  }
+  if (photo_) (void)shell.renderer().removeImage(photo_);
+  photo_ = *uploaded;
+  openError_.clear();
+  doc_ = std::move(*doc);
+  for (const std::string& note : doc_->notes()) shell.showMessage("note: " + note);
+  canvas_ = Canvas();  // fits the new photo
+  selected_ = -1;
+  drag_.reset();
+  panFrom_.reset();
+  measuredShot_.reset();
+  discardOnDrop_.reset();
+  layOut(shell);
+  remeasure();
+}
+
+void EditMode::layOut(app::Shell& shell) {
+  windowSize_ = shell.window().framebufferSize();
+  const double width = windowSize_.x;
+  panelWidthPx_ = std::floor(std::min(std::clamp(0.3 * width, 260.0, 380.0), 0.6 * width));
+  const glm::ivec2 photoSize = doc_ ? glm::ivec2(doc_->photo().cols, doc_->photo().rows) : glm::ivec2(0);
+  canvas_.setArea({{0.0, 0.0}, {std::max(1.0, width - panelWidthPx_), std::max(1.0, double(windowSize_.y))}},
+                  photoSize);
+}
+
+void EditMode::onEnter(app::Shell& shell) {
+  keys_.fill(false);
+  layOut(shell);
+}
+
+void EditMode::onLeave(app::Shell&) {
+  // Nothing stays held while another mode runs: a drag ends where it was.
+  if (drag_) endDrag(true);
+  panFrom_.reset();
+  keys_.fill(false);
+}
+
+bool EditMode::overCanvas(const glm::dvec2& p) const {
+  if (!canvas_.area().contains(p)) return false;
+  return std::none_of(uiRects_.begin(), uiRects_.end(), [&](const WindowRect& r) { return r.contains(p); });
+}
+
+void EditMode::onInput(app::Shell& shell, const app::InputEvent& event) {
+  layOut(shell);
+  std::visit(Overloaded{[&](const app::KeyEvent& e) { onKey(shell, e); },
+                        [&](const app::MouseButtonEvent& e) { onButton(shell, e); },
+                        [&](const app::CursorEvent& e) { onCursor(e.positionPx); },
+                        [&](const app::ScrollEvent& e) {
+                          if (doc_ && overCanvas(cursorPx_) && e.offset.y != 0) canvas_.zoomAbout(cursorPx_, e.offset.y);
+                        },
+                        [&](const app::DropEvent& e) { onDrop(shell, e); }, [](const auto&) {}},
+             event);
+}
+
+void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
+  if (e.key < 0 || e.key > GLFW_KEY_LAST) return;
+  keys_[e.key] = e.down;
+  if (!e.down) return;
+  if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;  // typing into a panel's field
+  const bool ctrl = ctrlHeld() || (e.mods & GLFW_MOD_CONTROL);
+  const bool shift = shiftHeld() || (e.mods & GLFW_MOD_SHIFT);
+  const bool alt = altHeld() || (e.mods & GLFW_MOD_ALT);
+  if (ctrl) {
+    if (e.key == GLFW_KEY_Z) shift ? redo(shell) : undo(shell);
+    else if (e.key == GLFW_KEY_Y) redo(shell);
+    else if (e.key == GLFW_KEY_S) save(shell);
+    return;
+  }
+  if (e.key == GLFW_KEY_F1) showKeys_ = !showKeys_;
+  if (!doc_) return;
+  if (alt && e.key >= GLFW_KEY_1 && e.key <= GLFW_KEY_8) {
+    select(e.key - GLFW_KEY_1);
+    return;
+  }
+  const double nudgePx = shift ? kSlowFactor * kNudgePx : kNudgePx;
+  switch (e.key) {
+    case GLFW_KEY_TAB:
+      select(selected_ < 0 ? (shift ? kCornerCount - 1 : 0) : (selected_ + (shift ? kCornerCount - 1 : 1)) % kCornerCount);
+      break;
+    case GLFW_KEY_1:
+      canvas_.setScaleAbout(overCanvas(cursorPx_) ? cursorPx_ : canvas_.area().centre(), 1.0);
+      break;
+    case GLFW_KEY_F:
+      canvas_.fit();
+      break;
+    case GLFW_KEY_H:
+      showOverlay_ = !showOverlay_;
+      break;
+    case GLFW_KEY_LEFT: nudge({-nudgePx, 0}); break;
+    case GLFW_KEY_RIGHT: nudge({nudgePx, 0}); break;
+    case GLFW_KEY_UP: nudge({0, -nudgePx}); break;
+    case GLFW_KEY_DOWN: nudge({0, nudgePx}); break;
+    case GLFW_KEY_W:
+      walk(shell);
+      break;
+    case GLFW_KEY_ESCAPE:
+      if (drag_) endDrag(false);  // the corner goes back to where the drag began
+      break;
+    default:
+      break;
+  }
+}
+
+void EditMode::onButton(app::Shell&, const app::MouseButtonEvent& e) {
+  if (!e.down) {
+    if (drag_ && e.button == GLFW_MOUSE_BUTTON_LEFT) endDrag(true);
+    if (panFrom_ && e.button == panButton_) panFrom_.reset();
+    return;
+  }
+  if (!doc_ || drag_ || panFrom_ || !overCanvas(cursorPx_)) return;
+  if (e.button == GLFW_MOUSE_BUTTON_MIDDLE || e.button == GLFW_MOUSE_BUTTON_RIGHT ||
+      (e.button == GLFW_MOUSE_BUTTON_LEFT && held(GLFW_KEY_SPACE))) {
+    panFrom_ = cursorPx_;
+    panButton_ = e.button;
+    return;
+  }
+  if (e.button != GLFW_MOUSE_BUTTON_LEFT) return;
+  const int corner = handleAt(canvas_, doc_->shot(), cursorPx_, kGrabRadiusPx);
+  select(corner);
+  if (corner >= 0) drag_ = Drag{corner, doc_->shot(), cursorPx_};
+}
+
+void EditMode::onCursor(const glm::dvec2& p) {
+  cursorPx_ = p;
+  if (panFrom_) {
+    canvas_.pan(p - *panFrom_);
+    panFrom_ = p;
+  }
+  if (drag_ && doc_) {
+    Shot shot = doc_->shot();
+    glm::dvec2& corner = shot.cornersPx[drag_->corner];
+    corner += (p - drag_->lastCursorPx) / canvas_.scale() * (shiftHeld() ? kSlowFactor : 1.0);
+    // Corners may lie beyond the photo's edges, but not so far that the shot file would
+    // be refused (modeling::loadShot: within one image size).
+    const glm::dvec2 size(shot.imageWidth, shot.imageHeight);
+    corner = glm::clamp(corner, -size, 2.0 * size);
+    drag_->lastCursorPx = p;
+    doc_->setLive(shot);
+  }
+}
+
+void EditMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
+  if (e.paths.empty()) return;
+  const fs::path& path = e.paths.front();
+  if (doc_ && doc_->dirty() && discardOnDrop_ != path) {
+    discardOnDrop_ = path;
+    shell.showMessage("unsaved changes in " + doc_->path().string() + ": Ctrl+S saves them; drop " +
+                      path.filename().string() + " again to open it and discard them");
+    return;
+  }
+  if (drag_) endDrag(true);
+  openFile(shell, path);
+}
+
+void EditMode::select(int corner) { selected_ = (corner >= 0 && corner < kCornerCount) ? corner : -1; }
+
+void EditMode::endDrag(bool keep) {
+  if (!drag_ || !doc_) return;
+  if (keep) {
+    doc_->commitLive(drag_->before, std::string("move ") + metrology::cornerName(drag_->corner));
+  } else {
+    doc_->setLive(drag_->before);
+  }
+  drag_.reset();
+}
+
+void EditMode::nudge(const glm::dvec2& delta) {
+  if (!doc_ || drag_ || selected_ < 0) return;
+  Shot shot = doc_->shot();
+  shot.cornersPx[selected_] += delta;
+  doc_->apply(shot, std::string("nudge ") + metrology::cornerName(selected_));
+  nudgeLoupeUntil_ = step_ + kNudgeLoupeSteps;
+}
+
+void EditMode::applyEdit(app::Shell&, const Shot& after, const std::string& label) {
+  if (!doc_) return;
+  if (drag_) endDrag(true);
+  doc_->apply(after, label);
+}
+
+void EditMode::undo(app::Shell& shell) {
+  if (!doc_ || drag_) return;
+  if (!doc_->undo()) shell.showMessage("nothing to undo");
+}
+
+void EditMode::redo(app::Shell& shell) {
+  if (!doc_ || drag_) return;
+  if (!doc_->redo()) shell.showMessage("nothing to redo");
+}
+
+void EditMode::save(app::Shell& shell) {
+  if (!doc_) {
+    shell.showMessage("nothing to save: no file is open");
+    return;
+  }
+  if (drag_) endDrag(true);
+  if (Status saved = doc_->save(); !saved) {
+    shell.showMessage("error: not saved: " + saved.message());
+    return;
+  }
+  shell.showMessage("saved " + doc_->path().string());
+}
+
+void EditMode::walk(app::Shell& shell) {
+  if (!doc_) return;
+  if (drag_) endDrag(true);
+  remeasure();
+  if (!measurement_) {
+    shell.showMessage("walk: the corners cannot be measured yet: " + measureError_);
+    return;
+  }
+  if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *measurement_); !shown) {
+    shell.showMessage("walk: no model: " + shown.message());
+    return;
+  }
+  shell.requestMode(std::string(walk_.name()));
+}
+
+Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
+  const auto* copy = std::any_cast<SaveCopyEvent>(&event.value);
+  if (!copy) return AppMode::onReplayEvent(shell, event);
+  if (!doc_) return makeError("save-copy: no file is open");
+  return doc_->saveCopy(copy->path);
+}
+
+void EditMode::remeasure() {
+  if (!doc_) {
+    measuredShot_.reset();
+    measurement_.reset();
+    vanishing_.reset();
+    warnings_.clear();
+    return;
+  }
+  if (measuredShot_ && sameShot(*measuredShot_, doc_->shot())) return;
+  const Shot& shot = doc_->shot();
+  measuredShot_ = shot;
+  measurement_.reset();
+  vanishing_.reset();
+  warnings_.clear();
+  try {
+    if (auto v = metrology::corridorVanishing(shot.cornersPx)) vanishing_ = *v;
+    auto m = metrology::measureCorridor(shot);
+    if (m) {
+      measurement_ = std::move(*m);
+      measureError_.clear();
+      warnings_ = measurementWarnings(shot, *measurement_);
+    } else {
+      measureError_ = m.message();
+    }
+  } catch (const std::exception& e) {  // nothing a person does may end the editor
+    measureError_ = std::string("the measurement failed: ") + e.what();
+  }
+}
+
+void EditMode::update(app::Shell& shell, double) {
+  layOut(shell);
+  remeasure();
+  ++step_;
+}
+
+std::optional<Loupe> EditMode::loupe() const {
+  if (!doc_) return std::nullopt;
+  const Shot& shot = doc_->shot();
+  if (drag_) return placeLoupe(canvas_, shot.cornersPx[drag_->corner], drag_->corner, cursorPx_);
+  if (selected_ >= 0 && step_ <= nudgeLoupeUntil_) {
+    return placeLoupe(canvas_, shot.cornersPx[selected_], selected_, canvas_.toWindow(shot.cornersPx[selected_]));
+  }
+  return std::nullopt;
+}
+
+void EditMode::addDocumentTrace(app::TraceRow& row) const {
+  if (!doc_) {
+    row.add("document", ordered_json{{"path", nullptr}, {"dirty", false}});
+    return;
+  }
+  row.add("document", ordered_json{{"path", doc_->path().string()}, {"dirty", doc_->dirty()}});
+}
+
+void EditMode::traceRow(app::TraceRow& row) const {
+  const engine::ImageTransform& t = canvas_.transform();
+  row.add("image_to_window", ordered_json{{"scale", t.scale}, {"offset", pair(t.offset)}});
+  if (doc_) {
+    ordered_json corners = ordered_json::object();
+    for (int k = 0; k < kCornerCount; ++k) corners[metrology::cornerName(k)] = pair(doc_->shot().cornersPx[k]);
+    row.add("corners_px", corners);
+  } else {
+    row.add("corners_px", ordered_json(nullptr));
+  }
+  row.add("selected", selected_ >= 0 ? ordered_json(metrology::cornerName(selected_)) : ordered_json(nullptr));
+  if (measurement_) {
+    const metrology::Dimensions& size = measurement_->size;
+    row.add("measurement", ordered_json{{"width_m", size.widthM}, {"height_m", size.heightM}, {"length_m", size.lengthM}});
+  } else {
+    row.add("measurement", ordered_json(nullptr));
+  }
+  addDocumentTrace(row);
+  if (const std::optional<Loupe> l = loupe()) {
+    const glm::dvec2 size = l->rect.size();
+    row.add("loupe", ordered_json{{"corner", metrology::cornerName(l->corner)},
+                                  {"rect", ordered_json::array({l->rect.min.x, l->rect.min.y, size.x, size.y})},
+                                  {"scale", l->transform.scale},
+                                  {"offset", pair(l->transform.offset)}});
+  } else {
+    row.add("loupe", ordered_json(nullptr));
+  }
+}
+
+app::FrameContent EditMode::frame(app::Shell&) {
+  app::FrameContent content;
+  content.clearColor = glm::vec3(0.10f, 0.10f, 0.11f);
+  if (!doc_ || !photo_) return content;
+  engine::ImageView canvas;
+  canvas.image = photo_;
+  canvas.transform = canvas_.transform();
+  canvas.rect = pixelRect(canvas_.area());
+  canvas.background = glm::vec4(0.17f, 0.17f, 0.19f, 1.0f);
+  content.views.push_back(canvas);
+  if (const std::optional<Loupe> l = loupe()) {
+    engine::ImageView view;
+    view.image = photo_;
+    view.transform = l->transform;
+    view.rect = pixelRect(l->rect);
+    view.filter = engine::ImageFilter::kNearest;
+    view.background = glm::vec4(0.05f, 0.05f, 0.05f, 1.0f);
+    content.views.push_back(view);
+  }
+  return content;
+}
+
+}  // namespace pw::edit

@@ -1,0 +1,138 @@
+// The editor as a mode of the app shell (editor/app): the photo on a canvas that pans
+// and zooms (canvas.h), the eight corners as handles over it (overlay.h) with a loupe
+// while one is dragged or nudged, a live measurement and camera panel (panels.cpp),
+// undo and redo of every edit, Save, and a switch to the walkthrough of the current
+// model and back (model_walk.h). README "The editor" lists the keys and the test
+// interface (replay events, the trace's fields).
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <GLFW/glfw3.h>
+
+#include "editor/app/app_mode.h"
+#include "editor/edit/canvas.h"
+#include "editor/edit/document.h"
+#include "editor/edit/overlay.h"
+#include "metrology/measure.h"
+#include "metrology/vanishing.h"
+
+namespace pw::edit {
+
+class ModelWalk;
+
+struct EditModeOptions {
+  std::optional<std::filesystem::path> file;  // a photo or a shot file to open; none: empty
+  OpenOptions open;
+};
+
+// `save-copy FILE`: the replay event that writes the shot as Ctrl+S would, to FILE
+// (relative to the script), leaving the document's path and state as they are.
+struct SaveCopyEvent {
+  std::filesystem::path path;
+};
+
+class EditMode : public app::AppMode {
+ public:
+  // `walk` is the shell's walk mode for this editor (borrowed).
+  EditMode(EditModeOptions options, ModelWalk& walk);
+
+  // The editor's own replay events (save-copy), paths relative to `scriptDir`.
+  static std::vector<app::ReplayVerb> replayVerbs(const std::filesystem::path& scriptDir);
+
+  std::string_view name() const override { return "edit"; }
+  Status open(app::Shell& shell) override;  // opens the file given; a failure is a message, not an error
+  void onEnter(app::Shell& shell) override;
+  void onLeave(app::Shell& shell) override;
+  void onInput(app::Shell& shell, const app::InputEvent& event) override;
+  Status onReplayEvent(app::Shell& shell, const app::ModeEvent& event) override;
+  void update(app::Shell& shell, double stepS) override;
+  void traceRow(app::TraceRow& row) const override;
+  void drawUi(app::Shell& shell) override;
+  app::FrameContent frame(app::Shell& shell) override;
+
+  // The trace's "document" field: {"path": ..., "dirty": ...} (also in walk rows).
+  void addDocumentTrace(app::TraceRow& row) const;
+
+ private:
+  struct Drag {
+    int corner = -1;
+    metrology::Shot before;  // the shot when the drag began: one undo step on release
+    glm::dvec2 lastCursorPx{0.0};
+  };
+
+  void openFile(app::Shell& shell, const std::filesystem::path& path);
+  void layOut(app::Shell& shell);  // the canvas's area from the window's size
+  void onKey(app::Shell& shell, const app::KeyEvent& event);
+  void onButton(app::Shell& shell, const app::MouseButtonEvent& event);
+  void onCursor(const glm::dvec2& positionPx);
+  void onDrop(app::Shell& shell, const app::DropEvent& event);
+  bool overCanvas(const glm::dvec2& windowPx) const;
+  bool held(int key) const { return key >= 0 && key <= GLFW_KEY_LAST && keys_[key]; }
+  bool shiftHeld() const { return held(GLFW_KEY_LEFT_SHIFT) || held(GLFW_KEY_RIGHT_SHIFT); }
+  bool ctrlHeld() const { return held(GLFW_KEY_LEFT_CONTROL) || held(GLFW_KEY_RIGHT_CONTROL); }
+  bool altHeld() const { return held(GLFW_KEY_LEFT_ALT) || held(GLFW_KEY_RIGHT_ALT); }
+
+  // Edits, each one undo step (a drag: one step when it ends).
+  void endDrag(bool keep);
+  void nudge(const glm::dvec2& deltaPx);
+  void select(int corner);
+  void undo(app::Shell& shell);
+  void redo(app::Shell& shell);
+  void save(app::Shell& shell);
+  void walk(app::Shell& shell);
+  void applyEdit(app::Shell& shell, const metrology::Shot& after, const std::string& label);
+
+  void remeasure();  // when the shot changed since the last measurement
+  std::optional<Loupe> loupe() const;
+
+  // panels.cpp: the side panel (document, measurement, warnings, camera, corners, keys).
+  void drawPanel(app::Shell& shell);
+  void drawMeasurement();
+  void drawCamera(app::Shell& shell);
+  void drawCorners();
+  // A number field whose edit becomes one undo step when it loses focus; true then,
+  // with the value typed in `*edited`.
+  bool numberField(const char* label, double value, double* edited, const char* format);
+  void drawCanvasOverlay();
+  void drawEmptyHint(app::Shell& shell);
+
+  EditModeOptions options_;
+  ModelWalk& walk_;
+  std::optional<Document> doc_;
+  std::string openError_;  // why the last file could not be opened
+  engine::ImageHandle photo_;
+  glm::ivec2 windowSize_{0};
+  double panelWidthPx_ = 0;
+  Canvas canvas_;
+  std::vector<WindowRect> uiRects_;  // ImGui windows over the canvas, as last drawn
+
+  // The measurement of the shot as it is (or why it cannot be measured).
+  std::optional<metrology::Shot> measuredShot_;
+  std::optional<metrology::Measurement> measurement_;
+  std::optional<metrology::CorridorVanishing> vanishing_;
+  std::string measureError_;
+  std::vector<std::string> warnings_;
+
+  int selected_ = -1;
+  std::optional<Drag> drag_;
+  std::optional<glm::dvec2> panFrom_;  // the cursor when a pan began or last moved
+  int panButton_ = -1;
+  glm::dvec2 cursorPx_{-1.0};
+  long step_ = 0;
+  long nudgeLoupeUntil_ = -1;  // the loupe shows until this step after a nudge
+  std::array<bool, GLFW_KEY_LAST + 1> keys_{};
+  std::optional<std::filesystem::path> discardOnDrop_;  // a second drop of it discards unsaved changes
+  bool showKeys_ = false;
+  bool showOverlay_ = true;  // H hides the handles and guides, to see the photo under them
+
+  // The panel's field being typed into, and its text's value so far.
+  unsigned activeField_ = 0;
+  double activeFieldValue_ = 0;
+};
+
+}  // namespace pw::edit

@@ -1,0 +1,54 @@
+#include "editor/edit/edit_window.h"
+
+#include "base/atomic_file.h"
+#include "editor/app/shell.h"
+#include "editor/edit/edit_mode.h"
+#include "editor/edit/model_walk.h"
+#include "editor/walk/replay.h"
+
+namespace pw::edit {
+
+Result<std::vector<app::ReplayEvent>> readEditReplay(const std::filesystem::path& path) {
+  auto text = readFile(path);
+  if (!text) return text.error();
+  std::vector<app::ReplayVerb> verbs = EditMode::replayVerbs(path.parent_path());
+  for (app::ReplayVerb& verb : walk::replayVerbs()) verbs.push_back(std::move(verb));
+  return app::parseReplay(*text, path.string(), path.parent_path(), verbs);
+}
+
+Result<EditReport> runEditWindow(const EditWindowOptions& options) {
+  app::ShellOptions shellOptions;
+  shellOptions.window = {options.width, options.height, "photowalk edit"};
+  shellOptions.vsync = options.vsync;
+  shellOptions.renderer.forceCpu = options.forceCpu;
+  shellOptions.renderer.profile = engine::RenderProfile::kInteractive;
+  shellOptions.replay = options.replay;
+  shellOptions.tracePath = options.tracePath;
+  shellOptions.traceFormat = app::TraceFormat::kJsonLines;
+  auto shell = app::Shell::create(shellOptions);
+  if (!shell) return shell.error();
+
+  // The walk's trace rows carry the editor's document too; the editor outlives the run.
+  EditMode* editor = nullptr;
+  ModelWalk walk("edit", [&editor](app::TraceRow& row) {
+    if (editor) editor->addDocumentTrace(row);
+  });
+  EditModeOptions editOptions;
+  editOptions.file = options.file;
+  editOptions.open = options.open;
+  EditMode edit(editOptions, walk);
+  editor = &edit;
+  PW_TRY((*shell)->addMode(edit));
+  PW_TRY((*shell)->addMode(walk));
+  auto run = (*shell)->run(edit.name());
+  if (!run) return run.error();
+
+  EditReport report;
+  report.framesDrawn = run->framesDrawn;
+  report.framesSimulated = run->framesSimulated;
+  report.medianFrameMs = run->medianFrameMs;
+  report.deviceName = (*shell)->renderer().deviceName();
+  return report;
+}
+
+}  // namespace pw::edit

@@ -1,0 +1,300 @@
+// The editor's ImGui: the side panel (document, measurement, warnings, camera,
+// corners, keys), the overlay on the canvas, and the hint when nothing is open.
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "editor/app/shell.h"
+#include "editor/edit/edit_mode.h"
+
+namespace pw::edit {
+namespace {
+
+using metrology::kCornerCount;
+using metrology::Shot;
+
+constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                          ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoBringToFrontOnFocus;
+const ImVec4 kWarningColour(1.0f, 0.80f, 0.30f, 1.0f);
+const ImVec4 kErrorColour(1.0f, 0.45f, 0.40f, 1.0f);
+const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
+
+const char* const kKeys =
+    "wheel              zoom about the cursor\n"
+    "middle/right drag  pan (or Space + left drag)\n"
+    "F, 1               fit the photo; 1:1\n"
+    "H                  hide/show the handles and guides\n"
+    "drag a handle      move the corner (Shift: 10x slower)\n"
+    "Tab, Shift+Tab     next, previous corner\n"
+    "Alt+1..8           select P1..P8\n"
+    "arrow keys         nudge 1 px (Shift: 0.1 px)\n"
+    "Esc                cancel a drag\n"
+    "Ctrl+Z             undo\n"
+    "Ctrl+Shift+Z, Ctrl+Y  redo\n"
+    "Ctrl+S             save\n"
+    "W                  walk through the model (Esc: back)\n"
+    "F1                 keys";
+
+void wrapped(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+WindowRect currentWindowRect() {
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  return {{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};
+}
+
+ImVec4 roleColourVec(int corner) {
+  const glm::u8vec4 c = roleColour(cornerRole(corner));
+  return ImVec4(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
+}
+
+// The canvas less the loupe: up to four rectangles around it.
+std::vector<WindowRect> around(const WindowRect& area, const WindowRect& hole) {
+  const WindowRect h{glm::max(hole.min - 1.0, area.min), glm::min(hole.max + 1.0, area.max)};
+  std::vector<WindowRect> pieces = {{area.min, {area.max.x, h.min.y}},
+                                    {{area.min.x, h.max.y}, area.max},
+                                    {{area.min.x, h.min.y}, {h.min.x, h.max.y}},
+                                    {{h.max.x, h.min.y}, {area.max.x, h.max.y}}};
+  std::erase_if(pieces, [](const WindowRect& r) { return r.empty(); });
+  return pieces;
+}
+
+}  // namespace
+
+void EditMode::drawUi(app::Shell& shell) {
+  layOut(shell);
+  uiRects_.clear();
+  if (doc_) drawCanvasOverlay();
+  else drawEmptyHint(shell);
+  drawPanel(shell);
+  if (showKeys_) {
+    ImGui::SetNextWindowPos({16, 40}, ImGuiCond_Appearing);
+    ImGui::Begin("Keys", &showKeys_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextUnformatted(kKeys);
+    uiRects_.push_back(currentWindowRect());
+    ImGui::End();
+  }
+}
+
+void EditMode::drawEmptyHint(app::Shell&) {
+  const glm::dvec2 centre = canvas_.area().centre();
+  ImGui::SetNextWindowPos({float(centre.x), float(centre.y)}, ImGuiCond_Always, {0.5f, 0.5f});
+  ImGui::SetNextWindowSizeConstraints({0, 0}, {float(canvas_.area().size().x - 20), 1e6f});
+  ImGui::Begin("##empty", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::TextUnformatted("No photo open.");
+  ImGui::TextUnformatted("Open one from the command line:");
+  ImGui::TextUnformatted("  photowalk edit PHOTO.jpg | SHOT.json");
+  ImGui::TextUnformatted("or drop a photo or a shot file on this window.");
+  if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
+  uiRects_.push_back(currentWindowRect());
+  ImGui::End();
+}
+
+void EditMode::drawPanel(app::Shell& shell) {
+  ImGui::SetNextWindowPos({float(windowSize_.x - panelWidthPx_), 0.0f}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({float(panelWidthPx_), float(windowSize_.y)}, ImGuiCond_Always);
+  ImGui::Begin("photowalk edit", nullptr, kFixedWindow);
+  uiRects_.push_back(currentWindowRect());
+  if (!doc_) {
+    ImGui::TextWrapped("No file open. F1: keys.");
+    if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
+    ImGui::End();
+    return;
+  }
+  const bool dirty = doc_->dirty();
+  ImGui::Text("%s%s", doc_->path().filename().string().c_str(), dirty ? "  (unsaved)" : "");
+  ImGui::PushStyleColor(ImGuiCol_Text, kNoteColour);
+  ImGui::TextWrapped("saves to %s", doc_->path().string().c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::Button("Save")) save(shell);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc_->history().canUndo());
+  if (ImGui::Button("Undo")) undo(shell);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc_->history().canRedo());
+  if (ImGui::Button("Redo")) redo(shell);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!measurement_);
+  if (ImGui::Button("Walk (W)")) walk(shell);
+  ImGui::EndDisabled();
+  if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
+  for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
+  drawMeasurement();
+  drawCamera(shell);
+  drawCorners();
+  if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(kKeys);
+  ImGui::End();
+}
+
+void EditMode::drawMeasurement() {
+  if (!ImGui::CollapsingHeader("Measurement", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!measurement_) {
+    wrapped(kErrorColour, "cannot measure: " + measureError_);
+    return;
+  }
+  const metrology::Measurement& m = *measurement_;
+  ImGui::Text("width   %7.3f m  +- %.3f", m.size.widthM, m.sigma.widthM);
+  ImGui::Text("height  %7.3f m  +- %.3f", m.size.heightM, m.sigma.heightM);
+  ImGui::Text("length  %7.3f m  +- %.3f", m.size.lengthM, m.sigma.lengthM);
+  ImGui::TextDisabled("(+- one sigma at %.1f px per corner)", m.cornerSigmaPx);
+  const metrology::VanishingPoint& vp = m.vanishing.corridor;
+  ImGui::Text("vanishing point (%.1f, %.1f) px", vp.px.x, vp.px.y);
+  ImGui::Text("  residual %.2f px", vp.residualPx);
+  ImGui::Text("yaw %.2f\xc2\xb0  pitch %.2f\xc2\xb0", m.pose.yawDeg, m.pose.pitchDeg);
+  ImGui::Text("roll %.2f\xc2\xb0", m.pose.rollDeg);
+  ImGui::Text("camera at (%.2f, %.2f, %.2f) m", m.pose.positionM.x, m.pose.positionM.y, m.pose.positionM.z);
+  ImGui::Text("reprojection error %.2f px RMS", m.reprojectionRmsPx);
+  if (m.reference) {
+    ImGui::Text("reference %s-%s %.3f m (given %.3f)", metrology::cornerName(m.reference->from),
+                metrology::cornerName(m.reference->to), m.reference->measuredM, m.reference->givenM);
+  }
+  for (const std::string& warning : warnings_) wrapped(kWarningColour, "warning: " + warning);
+}
+
+bool EditMode::numberField(const char* label, double value, double* edited, const char* format) {
+  const ImGuiID id = ImGui::GetID(label);
+  double v = activeField_ == id ? activeFieldValue_ : value;
+  ImGui::SetNextItemWidth(120.0f);
+  ImGui::InputDouble(label, &v, 0.0, 0.0, format);
+  if (ImGui::IsItemActive()) {
+    activeField_ = id;
+    activeFieldValue_ = v;
+  }
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
+    if (activeField_ == id) activeField_ = 0;
+    *edited = v;
+    return true;
+  }
+  if (ImGui::IsItemDeactivated() && activeField_ == id) activeField_ = 0;
+  return false;
+}
+
+void EditMode::drawCamera(app::Shell& shell) {
+  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const Shot shot = doc_->shot();
+  Shot after = shot;
+  std::string label;
+  const auto positive = [&](double v, const char* what) {
+    if (std::isfinite(v) && v > 0) return true;
+    shell.showMessage(std::string("warning: ") + what + " must be a positive number; kept as it was");
+    return false;
+  };
+  bool inMm = shot.focalMm.has_value();
+  if (ImGui::Checkbox("focal length in mm", &inMm)) {
+    if (inMm) {
+      after.focalMm = metrology::FocalLengthMm{shot.focalPx / shot.imageWidth * 36.0, 36.0};  // a full-frame sensor
+      after.focalPx = after.focalMm->pixels(shot.imageWidth);
+    } else {
+      after.focalMm.reset();
+    }
+    label = "focal length unit";
+  }
+  double v = 0;
+  if (shot.focalMm) {
+    if (numberField("focal mm", shot.focalMm->focalMm, &v, "%.2f") && positive(v, "the focal length")) {
+      after.focalMm->focalMm = v;
+      label = "focal length";
+    }
+    if (numberField("sensor width mm", shot.focalMm->sensorWidthMm, &v, "%.2f") && positive(v, "the sensor width")) {
+      after.focalMm->sensorWidthMm = v;
+      label = "sensor width";
+    }
+    if (after.focalMm) after.focalPx = after.focalMm->pixels(shot.imageWidth);
+    ImGui::TextDisabled("= %.1f px", shot.focalPx);
+  } else if (numberField("focal px", shot.focalPx, &v, "%.1f") && positive(v, "the focal length")) {
+    after.focalPx = v;
+    label = "focal length";
+  }
+  const glm::dvec2 pp = shot.principalPoint();
+  if (numberField("principal u px", pp.x, &v, "%.1f") && std::isfinite(v)) {
+    after.principalPointPx = glm::dvec2(v, pp.y);
+    label = "principal point";
+  }
+  if (numberField("principal v px", pp.y, &v, "%.1f") && std::isfinite(v)) {
+    after.principalPointPx = glm::dvec2(pp.x, v);
+    label = "principal point";
+  }
+  if (shot.principalPointPx) {
+    if (ImGui::SmallButton("principal point to the centre")) {
+      after.principalPointPx.reset();
+      label = "principal point";
+    }
+  } else {
+    ImGui::TextDisabled("(the photo's centre; a cropped photo moves it)");
+  }
+  if (numberField("camera height m", shot.cameraHeightM.value_or(0.0), &v, "%.3f") &&
+      positive(v, "the camera height")) {
+    after.cameraHeightM = v;
+    label = "camera height";
+  }
+  if (!label.empty()) applyEdit(shell, after, label);
+}
+
+void EditMode::drawCorners() {
+  if (!ImGui::CollapsingHeader("Corners", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const Shot& shot = doc_->shot();
+  for (int k = 0; k < kCornerCount; ++k) {
+    char line[96];
+    const std::optional<double> confidence = doc_->detectionConfidence(k);
+    if (confidence) {
+      std::snprintf(line, sizeof line, "%s  %9.2f %9.2f  detected %.2f", metrology::cornerName(k), shot.cornersPx[k].x,
+                    shot.cornersPx[k].y, *confidence);
+    } else {
+      std::snprintf(line, sizeof line, "%s  %9.2f %9.2f", metrology::cornerName(k), shot.cornersPx[k].x,
+                    shot.cornersPx[k].y);
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, roleColourVec(k));
+    if (ImGui::Selectable(line, selected_ == k)) select(k);
+    ImGui::PopStyleColor();
+  }
+}
+
+void EditMode::drawCanvasOverlay() {
+  ImDrawList* list = ImGui::GetBackgroundDrawList();
+  const Shot& shot = doc_->shot();
+  OverlayInput input;
+  input.canvas = &canvas_;
+  input.shot = &shot;
+  input.selected = selected_;
+  input.vanishing = vanishing_ ? &*vanishing_ : nullptr;
+  input.measurement = measurement_ ? &*measurement_ : nullptr;
+  for (int k = 0; k < kCornerCount; ++k) input.confidence[k] = doc_->detectionConfidence(k);
+  const std::optional<Loupe> magnifier = loupe();
+  const std::vector<WindowRect> pieces =
+      magnifier ? around(canvas_.area(), magnifier->rect) : std::vector<WindowRect>{canvas_.area()};
+  if (showOverlay_) {
+    for (const WindowRect& piece : pieces) {
+      list->PushClipRect({float(piece.min.x), float(piece.min.y)}, {float(piece.max.x), float(piece.max.y)}, false);
+      drawOverlay(list, input);
+      list->PopClipRect();
+    }
+  }
+  if (magnifier) drawLoupe(list, *magnifier, shot);
+
+  // A status line: the zoom, the selected corner, the photo pixel under the cursor.
+  char status[160];
+  int used = std::snprintf(status, sizeof status, "zoom %.3gx", canvas_.scale());
+  if (selected_ >= 0 && used > 0 && size_t(used) < sizeof status) {
+    used += std::snprintf(status + used, sizeof status - used, "   %s (%.2f, %.2f) px", metrology::cornerName(selected_),
+                          shot.cornersPx[selected_].x, shot.cornersPx[selected_].y);
+  }
+  if (canvas_.area().contains(cursorPx_) && used > 0 && size_t(used) < sizeof status) {
+    const glm::dvec2 p = canvas_.toPhoto(cursorPx_);
+    std::snprintf(status + used, sizeof status - used, "   cursor (%.1f, %.1f) px", p.x, p.y);
+  }
+  const ImVec2 at(float(canvas_.area().min.x) + 8, float(canvas_.area().min.y) + 6);
+  const ImVec2 size = ImGui::CalcTextSize(status);
+  list->AddRectFilled({at.x - 4, at.y - 2}, {at.x + size.x + 4, at.y + size.y + 2}, IM_COL32(0, 0, 0, 150), 3.0f);
+  list->AddText(at, IM_COL32(255, 255, 255, 255), status);
+}
+
+}  // namespace pw::edit
