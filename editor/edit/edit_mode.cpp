@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "editor/app/shell.h"
 #include "editor/edit/model_walk.h"
-#include "editor/edit/warnings.h"
+#include "editor/edit/live_measurement.h"
 
 namespace pw::edit {
 namespace fs = std::filesystem;
@@ -281,11 +280,11 @@ void EditMode::walk(app::Shell& shell) {
   if (!doc_) return;
   if (drag_) endDrag(true);
   remeasure();
-  if (!measurement_) {
-    shell.showMessage("walk: the corners cannot be measured yet: " + measureError_);
+  if (!live_.measurement) {
+    shell.showMessage("walk: the corners cannot be measured yet: " + live_.error);
     return;
   }
-  if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *measurement_); !shown) {
+  if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *live_.measurement); !shown) {
     shell.showMessage("walk: no model: " + shown.message());
     return;
   }
@@ -302,30 +301,12 @@ Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
 void EditMode::remeasure() {
   if (!doc_) {
     measuredShot_.reset();
-    measurement_.reset();
-    vanishing_.reset();
-    warnings_.clear();
+    live_ = {};
     return;
   }
   if (measuredShot_ && sameShot(*measuredShot_, doc_->shot())) return;
-  const Shot& shot = doc_->shot();
-  measuredShot_ = shot;
-  measurement_.reset();
-  vanishing_.reset();
-  warnings_.clear();
-  try {
-    if (auto v = metrology::corridorVanishing(shot.cornersPx)) vanishing_ = *v;
-    auto m = metrology::measureCorridor(shot);
-    if (m) {
-      measurement_ = std::move(*m);
-      measureError_.clear();
-      warnings_ = measurementWarnings(shot, *measurement_);
-    } else {
-      measureError_ = m.message();
-    }
-  } catch (const std::exception& e) {  // nothing a person does may end the editor
-    measureError_ = std::string("the measurement failed: ") + e.what();
-  }
+  measuredShot_ = doc_->shot();
+  live_ = measureLive(*measuredShot_);
 }
 
 void EditMode::update(app::Shell& shell, double) {
@@ -363,8 +344,8 @@ void EditMode::traceRow(app::TraceRow& row) const {
     row.add("corners_px", ordered_json(nullptr));
   }
   row.add("selected", selected_ >= 0 ? ordered_json(metrology::cornerName(selected_)) : ordered_json(nullptr));
-  if (measurement_) {
-    const metrology::Dimensions& size = measurement_->size;
+  if (live_.measurement) {
+    const metrology::Dimensions& size = live_.measurement->size;
     row.add("measurement", ordered_json{{"width_m", size.widthM}, {"height_m", size.heightM}, {"length_m", size.lengthM}});
   } else {
     row.add("measurement", ordered_json(nullptr));

@@ -17,9 +17,8 @@
 #include "editor/app/app_mode.h"
 #include "editor/edit/canvas.h"
 #include "editor/edit/document.h"
+#include "editor/edit/live_measurement.h"
 #include "editor/edit/overlay.h"
-#include "metrology/measure.h"
-#include "metrology/vanishing.h"
 
 namespace pw::edit {
 
@@ -113,10 +112,7 @@ class EditMode : public app::AppMode {
 
   // The measurement of the shot as it is (or why it cannot be measured).
   std::optional<metrology::Shot> measuredShot_;
-  std::optional<metrology::Measurement> measurement_;
-  std::optional<metrology::CorridorVanishing> vanishing_;
-  std::string measureError_;
-  std::vector<std::string> warnings_;
+  LiveMeasurement live_;
 
   int selected_ = -1;
   std::optional<Drag> drag_;

@@ -123,7 +123,7 @@ void EditMode::drawPanel(app::Shell& shell) {
   if (ImGui::Button("Redo")) redo(shell);
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::BeginDisabled(!measurement_);
+  ImGui::BeginDisabled(!live_.measurement);
   if (ImGui::Button("Walk (W)")) walk(shell);
   ImGui::EndDisabled();
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
@@ -137,11 +137,11 @@ void EditMode::drawPanel(app::Shell& shell) {
 
 void EditMode::drawMeasurement() {
   if (!ImGui::CollapsingHeader("Measurement", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (!measurement_) {
-    wrapped(kErrorColour, "cannot measure: " + measureError_);
+  if (!live_.measurement) {
+    wrapped(kErrorColour, "cannot measure: " + live_.error);
     return;
   }
-  const metrology::Measurement& m = *measurement_;
+  const metrology::Measurement& m = *live_.measurement;
   ImGui::Text("width   %7.3f m  +- %.3f", m.size.widthM, m.sigma.widthM);
   ImGui::Text("height  %7.3f m  +- %.3f", m.size.heightM, m.sigma.heightM);
   ImGui::Text("length  %7.3f m  +- %.3f", m.size.lengthM, m.sigma.lengthM);
@@ -157,7 +157,7 @@ void EditMode::drawMeasurement() {
     ImGui::Text("reference %s-%s %.3f m (given %.3f)", metrology::cornerName(m.reference->from),
                 metrology::cornerName(m.reference->to), m.reference->measuredM, m.reference->givenM);
   }
-  for (const std::string& warning : warnings_) wrapped(kWarningColour, "warning: " + warning);
+  for (const std::string& warning : live_.warnings) wrapped(kWarningColour, "warning: " + warning);
 }
 
 bool EditMode::numberField(const char* label, double value, double* edited, const char* format) {
@@ -265,8 +265,8 @@ void EditMode::drawCanvasOverlay() {
   input.canvas = &canvas_;
   input.shot = &shot;
   input.selected = selected_;
-  input.vanishing = vanishing_ ? &*vanishing_ : nullptr;
-  input.measurement = measurement_ ? &*measurement_ : nullptr;
+  input.vanishing = live_.vanishing ? &*live_.vanishing : nullptr;
+  input.measurement = live_.measurement ? &*live_.measurement : nullptr;
   for (int k = 0; k < kCornerCount; ++k) input.confidence[k] = doc_->detectionConfidence(k);
   const std::optional<Loupe> magnifier = loupe();
   const std::vector<WindowRect> pieces =

@@ -1,0 +1,26 @@
+// What the editor shows of a shot as it is, measured again at each change (a drag
+// step): the measurement, or why there is none, the vanishing geometry of the corners
+// as given (drawn even when the box cannot be measured), and the warnings.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "metrology/measure.h"
+#include "metrology/shot.h"
+#include "metrology/vanishing.h"
+
+namespace pw::edit {
+
+struct LiveMeasurement {
+  std::optional<metrology::Measurement> measurement;
+  std::string error;  // why there is no measurement (one line), when there is none
+  std::optional<metrology::CorridorVanishing> vanishing;
+  std::vector<std::string> warnings;  // warnings.h
+};
+
+// Never throws, whatever the corners: a failure is `error`.
+LiveMeasurement measureLive(const metrology::Shot& shot);
+
+}  // namespace pw::edit
