@@ -1,15 +1,16 @@
 // Views in a window (engine/gpu/view.h through Presenter): a scene in a rectangle of
 // the swapchain image and in a texture, a photo under a pan/zoom transform, two
 // cameras in one frame, the overlay on top, all read back with the Presenter's
-// capture. GLFW (here in the test only; pw_gpu never sees it) opens an X11 window;
-// ctest runs this under xvfb-run, lavapipe presents to it.
-#define GLFW_INCLUDE_VULKAN
+// capture. The app shell's Window (editor/app; pw_gpu never sees GLFW) opens an X11
+// window with its surface; ctest runs this under xvfb-run, lavapipe presents to it.
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
 
 #include <gtest/gtest.h>
 
+#include "editor/app/glfw_session.h"
+#include "editor/app/window.h"
 #include "engine/gpu/presenter.h"
 #include "engine/scene/sample_scene.h"
 #include "tests/gpu/image_compare.h"
@@ -22,33 +23,34 @@ namespace {
 constexpr int kWidth = 320, kHeight = 240;
 
 // One window, renderer and presenter for the whole binary: making a renderer costs a
-// second on lavapipe, and GLFW does not always reach the X server again after a
-// terminate.
+// second on lavapipe, and GLFW stays initialised for the binary (app::initGlfw).
 class ViewsWindowTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    if (!std::getenv("DISPLAY") || !glfwInit()) return;
-    glfwReady_ = true;
-    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-    glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
-    window_ = glfwCreateWindow(kWidth, kHeight, "photowalk views test", nullptr, nullptr);
-    if (!window_) return;
-    uint32_t count = 0;
-    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    if (!std::getenv("DISPLAY")) return;
+    auto extensions = app::windowInstanceExtensions();
+    if (!extensions.ok()) {
+      setupError_ = extensions.message();
+      return;
+    }
     RendererOptions options;
     options.forceCpu = true;
     options.validation = RendererOptions::Validation::kOn;
-    for (uint32_t i = 0; i < count; ++i) options.instanceExtensions.emplace_back(names[i]);
+    options.instanceExtensions = *extensions;
     auto renderer = Renderer::create(options);
     if (!renderer.ok()) {
       setupError_ = renderer.message();
       return;
     }
     renderer_ = std::move(*renderer);
-    if (glfwCreateWindowSurface(renderer_->instance(), window_, nullptr, &surface_) != VK_SUCCESS) return;
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window_, &w, &h);
-    auto presenter = Presenter::create(*renderer_, surface_, w, h);
+    auto window = app::Window::create({kWidth, kHeight, "photowalk views test"}, renderer_->instance());
+    if (!window.ok()) {
+      setupError_ = window.message();
+      return;
+    }
+    window_ = std::move(*window);
+    const glm::ivec2 size = window_->framebufferSize();
+    auto presenter = Presenter::create(*renderer_, window_->surface(), size.x, size.y);
     if (!presenter.ok()) {
       setupError_ = presenter.message();
       return;
@@ -59,18 +61,12 @@ class ViewsWindowTest : public ::testing::Test {
   static void TearDownTestSuite() {
     if (presenter_) (void)presenter_->waitIdle();
     presenter_.reset();  // before the surface, which is before the renderer's instance
-    if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(renderer_->instance(), surface_, nullptr);
-    surface_ = VK_NULL_HANDLE;
+    window_.reset();
     renderer_.reset();
-    if (window_) glfwDestroyWindow(window_);
-    window_ = nullptr;
-    if (glfwReady_) glfwTerminate();
-    glfwReady_ = false;
   }
 
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (ctest runs this test under xvfb-run)";
-    ASSERT_TRUE(glfwReady_ && window_) << "GLFW cannot open a window on the X display";
     ASSERT_TRUE(presenter_) << setupError_;
     ASSERT_EQ(presenter_->extent().width, uint32_t(kWidth));
     ASSERT_EQ(presenter_->extent().height, uint32_t(kHeight));
@@ -106,10 +102,8 @@ class ViewsWindowTest : public ::testing::Test {
     return image.ok() ? std::move(*image) : Image{};
   }
 
-  static inline bool glfwReady_ = false;
-  static inline GLFWwindow* window_ = nullptr;
+  static inline std::unique_ptr<app::Window> window_;
   static inline std::unique_ptr<Renderer> renderer_;
-  static inline VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   static inline std::unique_ptr<Presenter> presenter_;
   static inline std::string setupError_ = "the renderer or presenter could not be made";
   size_t messagesBefore_ = 0;
