@@ -91,7 +91,12 @@ class StderrCapture {
 
 }  // namespace
 
-Result<metrology::Shot> readShotFile(const fs::path& path) {
+// The fields readShotFile reads and writeShotFile writes.
+constexpr const char* kShotFields[] = {"image",           "image_size",      "focal_px",  "focal_mm",
+                                       "sensor_width_mm", "principal_point", "camera_height_m", "corners_px",
+                                       "reference"};
+
+Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
   const std::string where = path.string();
   auto text = readFile(path);
   if (!text) return text.error();
@@ -188,13 +193,18 @@ Result<metrology::Shot> readShotFile(const fs::path& path) {
   if (!shot.cameraHeightM && !shot.reference) {
     return makeError(where + ": give camera_height_m or a reference length; without one the scale is unknown");
   }
+  if (otherFields) {
+    *otherFields = doc;
+    for (const char* key : kShotFields) otherFields->erase(key);
+  }
   return shot;
 }
 
 Result<LoadedShot> loadShot(const fs::path& path) {
-  auto shot = readShotFile(path);
+  json otherFields;
+  auto shot = readShotFile(path, &otherFields);
   if (!shot) return shot.error();
-  LoadedShot loaded{std::move(*shot), {}};
+  LoadedShot loaded{std::move(*shot), {}, std::move(otherFields)};
   metrology::Shot& s = loaded.shot;
   std::error_code ec;
   if (!fs::exists(s.imagePath, ec)) return makeError(path.string() + ": image " + s.imagePath + " does not exist");
@@ -233,8 +243,9 @@ Result<LoadedShot> loadShot(const fs::path& path) {
   return loaded;
 }
 
-Status writeShotFile(const fs::path& path, const metrology::Shot& shot) {
-  json doc;
+Status writeShotFile(const fs::path& path, const metrology::Shot& shot, const json& otherFields) {
+  json doc = otherFields.is_object() ? otherFields : json::object();
+  for (const char* key : kShotFields) doc.erase(key);
   fs::path image = shot.imagePath;
   std::error_code ec;
   const fs::path base = path.parent_path().empty() ? fs::path(".") : path.parent_path();

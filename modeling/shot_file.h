@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
@@ -15,20 +16,25 @@ namespace pw::modeling {
 
 // Parses the shot file and checks every number is present, finite and sensible.
 // Does not open the image; `shot.imagePath` is resolved against the file's folder.
-Result<metrology::Shot> readShotFile(const std::filesystem::path& path);
+// `otherFields` (may be null) receives the fields photowalk does not read (a JSON
+// object), so that a shot written back keeps them.
+Result<metrology::Shot> readShotFile(const std::filesystem::path& path, nlohmann::json* otherFields = nullptr);
 
 // Reads the shot file and its image (BGR, 8 bit), filling imageWidth/imageHeight and
 // checking the corners against the image size.
 struct LoadedShot {
   metrology::Shot shot;
   cv::Mat image;
+  nlohmann::json otherFields = nlohmann::json::object();  // as readShotFile gives them
 };
 Result<LoadedShot> loadShot(const std::filesystem::path& path);
 
-// Writes a shot file atomically. The image path is written relative to the shot
-// file's folder where possible; the focal length in the units it was read in
-// (focal_mm with sensor_width_mm, or focal_px).
-Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& shot);
+// Writes a shot file atomically: `otherFields` (a JSON object, e.g. LoadedShot's) and
+// the shot's own fields, which replace any of the same name. The image path is
+// written relative to the shot file's folder where possible; the focal length in the
+// units it was read in (focal_mm with sensor_width_mm, or focal_px).
+Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& shot,
+                     const nlohmann::json& otherFields = nlohmann::json::object());
 
 // The measurement as one JSON object (what `photowalk measure` prints): width_m,
 // height_m, length_m, sigma_m {...}, vanishing_point_px, camera {height_m, focal_px,

@@ -79,17 +79,9 @@ json detectionJson(const CorridorDetection& d) {
 }
 
 // The shot file through writeShotFile (the format's one writer), with the detection
-// object added, renamed into place only when complete.
+// object beside the shot's fields.
 Status writeDetectedShot(const fs::path& path, const metrology::Shot& shot, const json& detection) {
-  return writeViaTempFile(path, [&](const fs::path& temp) -> Status {
-    PW_TRY(modeling::writeShotFile(temp, shot));
-    auto text = readFile(temp);
-    if (!text) return text.error();
-    json doc = json::parse(*text, nullptr, /*allow_exceptions=*/false);
-    if (!doc.is_object()) return makeError(path.string() + ": internal: the shot writer produced no JSON object");
-    doc["detection"] = detection;
-    return writeFileAtomic(temp, doc.dump(1) + "\n");
-  });
+  return modeling::writeShotFile(path, shot, json{{"detection", detection}});
 }
 
 int runDetect(Args& args) {

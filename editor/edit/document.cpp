@@ -86,6 +86,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.path_ = path;
     doc.shot_ = std::move(loaded->shot);
     doc.photo_ = std::move(loaded->image);
+    doc.otherFields_ = std::move(loaded->otherFields);
     doc.saved_ = doc.shot_;
     return doc;
   }
@@ -164,11 +165,11 @@ bool Document::redo() {
 }
 
 Status Document::save() {
-  PW_TRY(modeling::writeShotFile(path_, shot_));
+  PW_TRY(modeling::writeShotFile(path_, shot_, otherFields_));
   saved_ = shot_;
   return {};
 }
 
-Status Document::saveCopy(const fs::path& path) const { return modeling::writeShotFile(path, shot_); }
+Status Document::saveCopy(const fs::path& path) const { return modeling::writeShotFile(path, shot_, otherFields_); }
 
 }  // namespace pw::edit

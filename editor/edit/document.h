@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
@@ -99,6 +100,7 @@ class Document {
  private:
   std::filesystem::path path_;
   metrology::Shot shot_;
+  nlohmann::json otherFields_ = nlohmann::json::object();  // the shot file's fields photowalk does not read, kept
   std::optional<metrology::Shot> saved_;
   cv::Mat photo_;
   std::vector<std::string> notes_;

@@ -99,6 +99,27 @@ TEST_F(ShotFile, WriteThenReadGivesTheSameShot) {
   for (int i = 0; i < metrology::kCornerCount; ++i) EXPECT_EQ(again->shot.cornersPx[i], loaded->shot.cornersPx[i]);
 }
 
+// Fields photowalk does not read (a detection report, ground truth, a note) survive a
+// read and write; the shot's own fields are written from the shot.
+TEST_F(ShotFile, FieldsPhotowalkDoesNotReadSurviveAWrite) {
+  auto loaded = loadShot(write("extra.json", shot(", \"detection\": {\"confidence\": 0.9}, \"note\": \"hall\"")));
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  EXPECT_EQ(loaded->otherFields, nlohmann::json::parse(R"({"detection": {"confidence": 0.9}, "note": "hall"})"));
+  loaded->shot.cornersPx[0].x = 31;
+  ASSERT_TRUE(writeShotFile(dir_ / "extra_copy.json", loaded->shot, loaded->otherFields).ok());
+  std::ifstream in(dir_ / "extra_copy.json");
+  const nlohmann::json written = nlohmann::json::parse(in);
+  EXPECT_EQ(written.at("detection").at("confidence"), 0.9);
+  EXPECT_EQ(written.at("note"), "hall");
+  EXPECT_EQ(written.at("corners_px").at("P1")[0], 31.0);
+  // A field of the shot's own in otherFields is replaced, not kept.
+  ASSERT_TRUE(writeShotFile(dir_ / "extra_copy2.json", loaded->shot, nlohmann::json{{"focal_px", 1}}).ok());
+  auto again = loadShot(dir_ / "extra_copy2.json");
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ(again->shot.focalPx, 70.0);
+  EXPECT_TRUE(again->otherFields.empty());
+}
+
 // A focal length given in millimetres stays in millimetres (with the sensor width)
 // when the shot is written back, and means the same number of pixels.
 TEST_F(ShotFile, FocalInMillimetresSurvivesAWrite) {
