@@ -25,6 +25,11 @@
 
 namespace pw::metrology {
 
+// The square-pixel pinhole a measurement solves for, in the photo's own pixels.
+// engine::Intrinsics (engine/scene/scene.h) is the renderer's lens, fitted to frames of
+// any size; two types because metrology may not see the engine nor the engine
+// metrology, and the one layer both see (base/) is std only. modeling::photoCamera is
+// the one place this becomes that.
 struct Intrinsics {
   double focalPx = 0;
   glm::dvec2 principalPointPx{0.0};  // pixel centres at integer coordinates
@@ -49,7 +54,9 @@ CameraPose makeCameraPose(double yawDeg, double pitchDeg, double rollDeg, const 
 std::array<glm::dvec3, kCornerCount> corridorCorners(double widthM, double heightM, double lengthM);
 
 // Pixel (u, v) of a model-frame point and its depth in metres in front of the camera
-// (negative: behind it, and then u, v are meaningless).
+// (negative: behind it, and then u, v are meaningless). engine::projectToPixel is the
+// same projection for the renderer's Camera (see Intrinsics for why there are two);
+// tests/metrology/geometry_test.cpp holds both to the same pixels.
 glm::dvec3 projectToPixel(const Intrinsics& camera, const CameraPose& pose, const glm::dvec3& pointM);
 
 // The camera ray through pixel `px`, as a unit direction in the model frame.

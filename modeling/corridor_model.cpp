@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "metrology/rectify.h"
 #include "modeling/panel.h"
 
 namespace pw::modeling {
@@ -17,49 +19,25 @@ using metrology::Measurement;
 
 constexpr double kBehindCameraM = 1.0;  // untextured surfaces run on this far behind the eye
 constexpr int kFaces = 5;               // far wall, left, right, floor, ceiling (Surface 0..4)
+constexpr double kMinPxPerM = 16;       // a texture's least density, where the photo shows little
+constexpr double kOverviewFieldOfViewDeg = 60.0;
+constexpr double kOverviewElevationDeg = 25.0;  // how steeply the Overview looks down
 
 glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
 
-// The 3x3 map from a surface's (s, t, 1) to homogeneous photo pixels (u w, v w, w),
-// w the depth in front of the camera: the plane homography of the measured camera.
-cv::Matx33d planeToPhoto(const Measurement& m, const Panel& panel) {
-  const glm::dmat3 cameraFromWorld = glm::transpose(m.pose.worldFromCamera);
-  const glm::dvec3 sc = cameraFromWorld * panel.sAxis;
-  const glm::dvec3 tc = cameraFromWorld * panel.tAxis;
-  const glm::dvec3 oc = cameraFromWorld * (panel.origin - m.pose.positionM);
-  const double f = m.camera.focalPx, cu = m.camera.principalPointPx.x, cv = m.camera.principalPointPx.y;
-  // Camera looks along -Z, image v grows downwards: u w = f x - cu z, v w = -f y - cv z, w = -z.
-  const cv::Matx33d k(f, 0, -cu, 0, -f, -cv, 0, 0, -1);
-  const cv::Matx33d columns(sc.x, tc.x, oc.x, sc.y, tc.y, oc.y, sc.z, tc.z, oc.z);
-  return k * columns;
-}
-
-// Photo pixels per metre on the surface at (s, t) along s and along t.
-glm::dvec2 localScale(const cv::Matx33d& h, double s, double t) {
-  const auto project = [&](double ss, double tt) {
-    const cv::Vec3d p = h * cv::Vec3d(ss, tt, 1.0);
-    return cv::Vec2d(p[0] / p[2], p[1] / p[2]);
-  };
-  const double d = 1e-3;
-  const cv::Vec2d p = project(s, t);
-  return glm::dvec2(cv::norm(project(s + d, t) - p), cv::norm(project(s, t + d) - p)) / d;
-}
-
-bool visibleInPhoto(const cv::Matx33d& h, double s, double t, int width, int height) {
-  const cv::Vec3d p = h * cv::Vec3d(s, t, 1.0);
-  if (p[2] <= 1e-3) return false;
-  const double u = p[0] / p[2], v = p[1] / p[2];
-  return u >= -0.5 && u <= width - 0.5 && v >= -0.5 && v <= height - 0.5;
+// True where the measured camera sees model point p inside the photo.
+bool visibleInPhoto(const Measurement& m, const glm::dvec3& p, int width, int height) {
+  const glm::dvec3 px = metrology::projectWithMeasurement(m, p);
+  return px.z > 1e-3 && px.x >= -0.5 && px.x <= width - 0.5 && px.y >= -0.5 && px.y <= height - 0.5;
 }
 
 // How far beyond the near end (z > 0) the photo still shows some of the floor, walls
 // or ceiling: scanned in 2 cm steps towards the camera.
-double photoNearExtent(const Measurement& m, const CorridorBox& box, int width, int height) {
+double photoNearExtent(const Measurement& m, const metrology::Dimensions& box, int width, int height) {
   const double cameraZ = m.pose.positionM.z;
   double best = 0;
   for (int surface = 1; surface < kFaces; ++surface) {
     const Panel full = surfacePanel(static_cast<Surface>(surface), box, std::max(0.0, cameraZ));
-    const cv::Matx33d h = planeToPhoto(m, full);
     for (double z = 0.02; z < cameraZ - 0.05; z += 0.02) {
       const Panel at = surfacePanel(static_cast<Surface>(surface), box, z);
       // The cross-section at depth z is the extent's edge nearest the camera.
@@ -75,7 +53,7 @@ double photoNearExtent(const Measurement& m, const CorridorBox& box, int width, 
           s = at.extent.s0 + f * (at.extent.s1 - at.extent.s0);
           t = at.extent.t0 < 0 ? at.extent.t0 : at.extent.t1;
         }
-        any = visibleInPhoto(h, s, t, width, height);
+        any = visibleInPhoto(m, full.point(s, t), width, height);
       }
       if (!any) break;
       best = std::max(best, z);
@@ -94,94 +72,35 @@ engine::Image toImage(const cv::Mat& bgr) {
   return image;
 }
 
-// The photo at full size and halved again and again (Gaussian pyramid): a texture
-// coarser than the photo is cut from the level nearest its resolution, so shrinking
-// neither aliases nor costs a warp at the photo's full resolution.
-std::vector<cv::Mat> photoPyramid(const cv::Mat& photo) {
-  std::vector<cv::Mat> levels{photo};
-  while (levels.size() < 6 && std::min(levels.back().cols, levels.back().rows) > 256) {
-    cv::Mat next;
-    cv::pyrDown(levels.back(), next);
-    levels.push_back(next);
-  }
-  return levels;
-}
-
-// Cuts one surface's texture out of the photo; fills what the photo does not show
-// with the mean colour of what it does.
-SurfaceTexture cutTexture(const std::vector<cv::Mat>& pyramid, const Measurement& m, const Panel& panel,
-                          const ModelOptions& options, glm::vec3& meanColor) {
-  const cv::Mat& photo = pyramid.front();
+// Cuts one surface's texture out of the photo with metrology's rectifier, through the
+// measured camera; what the photo does not show is filled with the mean colour of
+// what it does.
+Result<SurfaceTexture> cutTexture(metrology::PhotoPyramid& photo, const Measurement& m, Surface surface,
+                                  const Panel& panel, const ModelOptions& options, glm::vec3& meanColor) {
   SurfaceTexture out;
   out.rect = panel.extent;
   const Rect& r = panel.extent;
   const double widthM = r.s1 - r.s0, heightM = r.t1 - r.t0;
-  const cv::Matx33d h = planeToPhoto(m, panel);
-
-  // The photo's own best resolution along s and along t on the part of the surface it
-  // shows, and its least (for the pyramid level).
-  glm::dvec2 photoScale(0.0), leastScale(std::numeric_limits<double>::max());
-  for (int j = 0; j <= 24; ++j) {
-    for (int i = 0; i <= 24; ++i) {
-      const double s = r.s0 + widthM * i / 24.0, t = r.t0 + heightM * j / 24.0;
-      if (!visibleInPhoto(h, s, t, photo.cols, photo.rows)) continue;
-      const glm::dvec2 scale = localScale(h, s, t);
-      photoScale = glm::max(photoScale, scale);
-      leastScale = glm::min(leastScale, scale);
-    }
-  }
-  if (photoScale.x == 0) leastScale = photoScale;
-  // Each axis has the photo's best density along it: a wall seen at a grazing angle has
-  // far more photo pixels per metre up than along, so texels need not be square (the
-  // geometry, not the image, carries the scale) and no detail the photo has is lost.
-  glm::dvec2 density = options.pxPerM > 0 ? glm::dvec2(options.pxPerM) : glm::max(photoScale, glm::dvec2(16.0));
-  density = glm::min(density, glm::dvec2(options.maxTextureSide / widthM, options.maxTextureSide / heightM));
-  const double texels = density.x * widthM * density.y * heightM;
-  if (texels > options.maxTexturePixels) density *= std::sqrt(options.maxTexturePixels / texels);
-  out.pxPerM = std::min(density.x, density.y);
-  const int texW = std::max(2, static_cast<int>(std::lround(widthM * density.x)));
-  const int texH = std::max(2, static_cast<int>(std::lround(heightM * density.y)));
-
-  // Pyramid level L holds pixel centres at (u + 0.5) / 2^L - 0.5. The photo's scale
-  // varies over the plane; a level coarser than the texture where the photo is at
-  // its coarsest would lose detail there, so the level follows the least scale seen.
-  const double shrink = std::min(leastScale.x / density.x, leastScale.y / density.y);
-  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(1.0, shrink)))), 0,
-                               static_cast<int>(pyramid.size()) - 1);
-  const double k = 1.0 / (1 << level);
-  const cv::Matx33d toLevel(k, 0, 0.5 * k - 0.5, 0, k, 0.5 * k - 0.5, 0, 0, 1);
-  // Texture pixel (x, y) -> (s, t): pixel centres, rows top (t1) to bottom (t0).
-  const cv::Matx33d pixelToPlane(widthM / texW, 0, r.s0 + 0.5 * widthM / texW, 0, -heightM / texH,
-                                 r.t1 - 0.5 * heightM / texH, 0, 0, 1);
-  const cv::Matx33d pixelToPhoto = toLevel * h * pixelToPlane;
-  const cv::Mat& source = pyramid[level];
-
-  cv::Mat warped, inside;
-  // Bicubic: the renderer resamples the texture once more (bilinear, mipmapped), and
-  // two bilinear steps in a row blur thin lines (mortar, tile joints) visibly.
-  cv::warpPerspective(source, warped, cv::Mat(pixelToPhoto), {texW, texH}, cv::INTER_CUBIC | cv::WARP_INVERSE_MAP,
-                      cv::BORDER_REPLICATE);
-  cv::warpPerspective(cv::Mat(source.size(), CV_8U, cv::Scalar(255)), inside, cv::Mat(pixelToPhoto), {texW, texH},
-                      cv::INTER_NEAREST | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT, cv::Scalar(0));
-  // Texels behind the camera map through the homography with w < 0: never valid. w is
-  // affine in (x, y), so it is positive everywhere when it is at the four corners.
-  const auto w = [&](double x, double y) { return pixelToPhoto(2, 0) * x + pixelToPhoto(2, 1) * y + pixelToPhoto(2, 2); };
-  if (std::min({w(0, 0), w(texW - 1, 0), w(0, texH - 1), w(texW - 1, texH - 1)}) <= 1e-6) {
-    for (int y = 0; y < texH; ++y) {
-      uint8_t* row = inside.ptr<uint8_t>(y);
-      for (int x = 0; x < texW; ++x) {
-        if (w(x, y) <= 1e-6) row[x] = 0;
-      }
-    }
-  }
-  const int covered = cv::countNonZero(inside);
-  out.coveredFraction = static_cast<double>(covered) / (texW * texH);
-  const cv::Scalar mean = covered > 0 ? cv::mean(warped, inside) : cv::Scalar(128, 128, 128);
-  meanColor = glm::vec3(mean[2], mean[1], mean[0]) / 255.0f;
-  warped.setTo(mean, ~inside);
-  out.image = toImage(warped);
-  // Texture coordinates (0..1 over the rect) to the photo's full-resolution pixels.
-  const cv::Matx33d photoFromTexCoord = h * cv::Matx33d(widthM, 0, r.s0, 0, heightM, r.t0, 0, 0, 1);
+  // Texture rows run from t1 (top) down to t0: the rectifier's metric (x, y) is the
+  // surface's (s0 + x, t1 - y).
+  const cv::Matx33d photoFromMetric =
+      metrology::photoFromPlane(m.camera, m.pose, panel.point(r.s0, r.t1), panel.sAxis, -panel.tAxis);
+  metrology::RectifyOptions rectify;
+  rectify.pxPerM = options.pxPerM;
+  rectify.perAxisDensity = true;
+  rectify.minPxPerM = kMinPxPerM;
+  rectify.maxSidePx = options.maxTextureSide;
+  rectify.maxPixels = options.maxTexturePixels;
+  rectify.outside = metrology::OutsidePhoto::kMeanColor;
+  auto plane = metrology::rectifyPlane(photo, photoFromMetric, widthM, heightM, rectify);
+  if (!plane) return makeError(std::string(surfaceName(surface)) + ": " + plane.message());
+  out.pxPerM = plane->pxPerM;
+  out.coveredFraction = plane->coverage;
+  meanColor = glm::vec3(plane->meanColor[2], plane->meanColor[1], plane->meanColor[0]) / 255.0f;
+  out.image = toImage(plane->image);
+  // Texture coordinates (0..1 over the rect, t = 0 at the bottom) to the photo's pixels:
+  // metric x = s W, y = (1 - t) H.
+  const cv::Matx33d photoFromTexCoord = photoFromMetric * cv::Matx33d(widthM, 0, 0, 0, -heightM, heightM, 0, 0, 1);
   glm::mat3 columns;
   for (int c = 0; c < 3; ++c) {
     for (int row = 0; row < 3; ++row) columns[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
@@ -220,26 +139,31 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
   model.measurement = measurement;
   model.photoWidth = photo.cols;
   model.photoHeight = photo.rows;
-  model.box = {measurement.size.widthM, measurement.size.heightM, measurement.size.lengthM};
+  model.box = measurement.size;
   const double cameraZ = measurement.pose.positionM.z;
   if (!attached && cameraZ > 0) {
     model.photoNearM = photoNearExtent(measurement, model.box, photo.cols, photo.rows);
     model.untexturedNearM = std::max(model.photoNearM, cameraZ + kBehindCameraM);
   }
-  const std::vector<cv::Mat> pyramid = photoPyramid(photo);
-  for (int surface = 0; surface < kFaces; ++surface) {
-    const Panel panel = surfacePanel(static_cast<Surface>(surface), model.box, model.photoNearM);
-    model.textures[surface] = cutTexture(pyramid, measurement, panel, options, model.meanColor[surface]);
+  metrology::PhotoPyramid pyramid(photo);
+  for (int s = 0; s < kFaces; ++s) {
+    const Surface surface = static_cast<Surface>(s);
+    const Panel panel = surfacePanel(surface, model.box, model.photoNearM);
+    auto texture = cutTexture(pyramid, measurement, surface, panel, options, model.meanColor[s]);
+    if (!texture) return makeError(name + ": " + texture.message());
+    model.textures[s] = std::move(*texture);
   }
   return model;
 }
 
-engine::Camera photoCamera(const Measurement& m, const glm::dmat4& worldFromCorridor) {
+engine::Camera photoCamera(const Measurement& m, int imageWidth, int imageHeight, const glm::dmat4& worldFromCorridor) {
   engine::Camera camera;
   camera.position = glm::vec3(apply(worldFromCorridor, m.pose.positionM));
   camera.orientation = toQuat(glm::dmat3(worldFromCorridor) * m.pose.worldFromCamera);
-  camera.intrinsics = engine::Intrinsics{m.camera.focalPx, m.camera.focalPx, m.camera.principalPointPx.x,
-                                         m.camera.principalPointPx.y};
+  // metrology's camera has square pixels: one focal length for both axes.
+  camera.intrinsics = engine::Intrinsics{m.camera.focalPx,           m.camera.focalPx, m.camera.principalPointPx.x,
+                                         m.camera.principalPointPx.y, imageWidth,       imageHeight};
+  camera.fieldOfViewRad = engine::fieldOfViewOf(*camera.intrinsics);
   return camera;
 }
 
@@ -336,9 +260,6 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
   const glm::dmat4& firstWorld = plan.worldFromCorridor.front();
   const Measurement& m0 = first.measurement;
   const float eye = static_cast<float>(m0.cameraHeightM);
-  const auto fovOf = [](const CorridorModel& model, int width, int height) {
-    return static_cast<float>(2.0 * std::atan(0.5 * std::min(width, height) / model.measurement.camera.focalPx));
-  };
   const auto addViewpoint = [&](const std::string& description, const glm::dvec3& positionLocal, double yawRad,
                                 double pitchRad, float fov, const glm::dmat4& world) {
     engine::Camera camera;
@@ -349,28 +270,55 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
     camera.fieldOfViewRad = fov;
     scene.viewpoints.push_back(engine::viewpointFromCamera(camera, description));
   };
-  const float photoFov = fovOf(first, first.photoWidth, first.photoHeight);
-  {
-    engine::Camera camera = photoCamera(m0, firstWorld);
-    camera.fieldOfViewRad = photoFov;
-    scene.viewpoints.push_back(engine::viewpointFromCamera(camera, "Photo"));
-  }
+  // The Photo viewpoint keeps the photo's exact lens (principal point included); the
+  // others look through the same field of view, centred.
+  const engine::Camera photo = photoCamera(m0, first.photoWidth, first.photoHeight, firstWorld);
+  const float photoFov = photo.fieldOfViewRad;
+  scene.viewpoints.push_back(engine::viewpointFromCamera(photo, "Photo"));
   const double entranceZ = std::max(0.0, std::min(m0.pose.positionM.z, first.untexturedNearM - 0.5));
   addViewpoint("Entrance", {0, eye, entranceZ}, 0, 0, photoFov, firstWorld);
   addViewpoint("Far end looking back", {0, eye, -std::max(0.5, first.box.lengthM - 1.0)}, glm::pi<double>(), 0, photoFov,
                firstWorld);
   {
+    // Overview: a cutaway from above. The eye is over the first corridor's centre line,
+    // behind its near end and above every ceiling, looking down at the building's
+    // centre. Faces are one-sided (seen only from inside), so from there the ceiling
+    // and any wall seen from behind are not drawn, and the floor, both walls of the
+    // first corridor, its far wall and every wall facing the eye show, as in an
+    // architect's cutaway. The eye is as near as it can be with every corner of the
+    // building's bounds inside the field of view (a cone: any frame's shape).
     const engine::Bounds bounds = engine::sceneBounds(scene);
-    const glm::vec3 centre = bounds.center();
-    const float radius = 0.5f * glm::length(bounds.size());
-    // Above and behind the entrance, looking down the building; the ceiling and the
-    // near walls face inwards, so from outside they do not hide the inside.
-    const glm::vec3 eyePos = glm::vec3(apply(firstWorld, {0, 0, 0})) +
-                             glm::vec3(glm::dmat3(firstWorld) * glm::dvec3(0.35 * radius, 1.1 * radius, 0.9 * radius));
+    const glm::dmat4 corridorFromWorld = glm::inverse(firstWorld);
+    std::vector<glm::dvec3> corners;
+    double top = -std::numeric_limits<double>::max();
+    for (int i = 0; i < 8; ++i) {
+      const glm::dvec3 p(i & 1 ? bounds.max.x : bounds.min.x, i & 2 ? bounds.max.y : bounds.min.y,
+                         i & 4 ? bounds.max.z : bounds.min.z);
+      corners.push_back(glm::dvec3(corridorFromWorld * glm::dvec4(p, 1.0)));
+      top = std::max(top, corners.back().y);
+    }
+    const glm::dvec3 centre = glm::dvec3(corridorFromWorld * glm::dvec4(glm::dvec3(bounds.center()), 1.0));
+    const double halfFov = 0.5 * glm::radians(kOverviewFieldOfViewDeg);
+    const double elevation = glm::radians(kOverviewElevationDeg);
+    const glm::dvec3 target(0.0, centre.y, centre.z);
+    const glm::dvec3 back(0.0, std::sin(elevation), std::cos(elevation));  // from the target to the eye
+    const auto fits = [&](double distance) {
+      const glm::dvec3 eye = target + distance * back;
+      if (eye.y < top + 0.5) return false;  // above every ceiling, so none hides the floor
+      for (const glm::dvec3& c : corners) {
+        if (glm::dot(glm::normalize(c - eye), -back) < std::cos(halfFov)) return false;
+      }
+      return true;
+    };
+    double near = 0, far = 1.0;
+    while (!fits(far) && far < 1e6) far *= 2;
+    for (int i = 0; i < 40; ++i) (fits(0.5 * (near + far)) ? far : near) = 0.5 * (near + far);
+    const glm::dvec3 eyeLocal = target + far * back;
+    const double fov = 2 * halfFov;
     engine::Camera camera;
-    camera.position = eyePos;
-    camera.orientation = engine::lookAtOrientation(eyePos, centre);
-    camera.fieldOfViewRad = glm::radians(60.0f);
+    camera.position = glm::vec3(apply(firstWorld, eyeLocal));
+    camera.orientation = engine::lookAtOrientation(camera.position, glm::vec3(apply(firstWorld, target)));
+    camera.fieldOfViewRad = static_cast<float>(fov);
     scene.viewpoints.push_back(engine::viewpointFromCamera(camera, "Overview"));
   }
   for (size_t c = 1; c < corridors.size(); ++c) {

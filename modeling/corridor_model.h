@@ -39,7 +39,7 @@ struct SurfaceTexture {
 
 struct CorridorModel {
   std::string name;
-  CorridorBox box;
+  metrology::Dimensions box;
   metrology::Measurement measurement;
   int photoWidth = 0;
   int photoHeight = 0;
@@ -48,7 +48,9 @@ struct CorridorModel {
   double photoNearM = 0;
   double untexturedNearM = 0;
   std::array<std::optional<SurfaceTexture>, 5> textures;  // far wall, left, right, floor, ceiling
-  std::array<glm::vec3, 5> meanColor{};                   // linear-free sRGB 0..1, for untextured parts
+  // Per surface, for its untextured parts: the mean of the photo's pixels where it
+  // shows the surface, averaged as stored (sRGB-encoded, not linear light), 0..1.
+  std::array<glm::vec3, 5> meanColor{};
 };
 
 // Cuts the textures out of the photo (BGR, 8 bit) for the measured corridor.
@@ -62,8 +64,12 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
 engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, const BuildingPlan& plan,
                                 const ModelOptions& options);
 
-// The camera that took corridor 0's photo, in the building's world frame, with the
-// photo's intrinsics: rendering from it at the photo's size lines up with the photo.
-engine::Camera photoCamera(const metrology::Measurement& measurement, const glm::dmat4& worldFromCorridor);
+// The camera that took a corridor's photo (imageWidth x imageHeight), placed in the
+// building's world frame by `worldFromCorridor`, with the photo's exact intrinsics and
+// the field of view they have: rendering from it at the photo's size lines up with the
+// photo. The one place a measured camera becomes the engine's: the model's "Photo"
+// viewpoint and render --camera-from both come from here.
+engine::Camera photoCamera(const metrology::Measurement& measurement, int imageWidth, int imageHeight,
+                           const glm::dmat4& worldFromCorridor);
 
 }  // namespace pw::modeling

@@ -102,7 +102,7 @@ Layout chainLayout(const std::vector<fs::path>& shots) {
   return layout;
 }
 
-Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<CorridorBox>& boxes) {
+Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<metrology::Dimensions>& boxes) {
   BuildingPlan plan;
   const size_t n = layout.corridors.size();
   if (boxes.size() != n) return makeError("layout and measured corridors differ in number");
@@ -111,14 +111,14 @@ Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<Corrid
   constexpr double kEps = 1e-6;
   for (size_t i = 0; i < n; ++i) {
     const LayoutEntry& entry = layout.corridors[i];
-    const CorridorBox& box = boxes[i];
+    const metrology::Dimensions& box = boxes[i];
     if (!entry.attach) {
       plan.worldFromCorridor[i] = glm::rotate(glm::translate(glm::dmat4(1.0), entry.position),
                                               glm::radians(entry.rotationDeg), glm::dvec3(0, 1, 0));
       continue;
     }
     const Attachment& a = *entry.attach;
-    const CorridorBox& host = boxes[a.to];
+    const metrology::Dimensions& host = boxes[a.to];
     const std::string who = "layout: corridor \"" + entry.name + "\" attached to \"" + layout.corridors[a.to].name + "\"";
     plan.attached[i] = true;
     const double height = std::min(host.heightM, box.heightM);

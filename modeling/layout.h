@@ -66,6 +66,6 @@ struct BuildingPlan {
 
 // Places every corridor and finds the openings. Errors name the corridor and say
 // what is wrong (an opening wider than the wall, an offset beyond the wall's end).
-Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<CorridorBox>& boxes);
+Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<metrology::Dimensions>& boxes);
 
 }  // namespace pw::modeling

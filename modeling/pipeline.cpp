@@ -14,11 +14,18 @@ Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const me
   return MeasuredShot{std::move(*loaded), std::move(*measurement)};
 }
 
+Result<engine::Camera> shotCamera(const std::filesystem::path& path) {
+  auto measured = measureShotFile(path);
+  if (!measured) return measured.error();
+  const cv::Mat& photo = measured->loaded.image;
+  return photoCamera(measured->measurement, photo.cols, photo.rows, glm::dmat4(1.0));
+}
+
 Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions) {
   BuiltModel model;
   model.layout = layout;
-  std::vector<modeling::CorridorBox> boxes;
+  std::vector<metrology::Dimensions> boxes;
   for (const modeling::LayoutEntry& entry : layout.corridors) {
     auto measured = measureShotFile(entry.shot, measureOptions);
     if (!measured) return measured.error();
@@ -38,8 +45,9 @@ Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::Mo
   modeling::TourOptions tour;
   tour.eyeHeightM = first.measurement.cameraHeightM;
   tour.startZ = std::max(0.0, std::min(first.measurement.pose.positionM.z, first.untexturedNearM - 0.5));
-  model.scene.info.push_back(
-      modeling::encodeTourInfo(modeling::tourWaypoints(model.layout, boxes, model.plan, tour)));
+  for (const glm::dvec3& p : modeling::tourWaypoints(model.layout, boxes, model.plan, tour)) {
+    model.scene.tour.emplace_back(p);
+  }
   return model;
 }
 

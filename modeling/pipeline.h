@@ -22,6 +22,11 @@ struct MeasuredShot {
 // Reads the shot file and its photo and measures the corridor. Errors name the file.
 Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options = {});
 
+// The camera that took the shot's photo, measured, placed as `build` places a first
+// corridor (photoCamera): the model's "Photo" viewpoint when it is built from this shot.
+// Its intrinsics are for the photo's size.
+Result<engine::Camera> shotCamera(const std::filesystem::path& path);
+
 struct BuiltModel {
   Layout layout;
   BuildingPlan plan;

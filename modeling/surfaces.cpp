@@ -7,7 +7,7 @@ const char* surfaceName(Surface surface) {
   return kNames[static_cast<int>(surface)];
 }
 
-Panel surfacePanel(Surface surface, const CorridorBox& box, double nearM) {
+Panel surfacePanel(Surface surface, const metrology::Dimensions& box, double nearM) {
   const double w = box.widthM, h = box.heightM, l = box.lengthM;
   Panel p;
   switch (surface) {

@@ -5,15 +5,10 @@
 // run on towards it: `nearM` says how far (z from 0 to nearM) a surface continues.
 #pragma once
 
+#include "metrology/measure.h"
 #include "modeling/panel.h"
 
 namespace pw::modeling {
-
-struct CorridorBox {
-  double widthM = 0;
-  double heightM = 0;
-  double lengthM = 0;
-};
 
 enum class Surface : int { kFarWall = 0, kLeftWall, kRightWall, kFloor, kCeiling, kNearEnd };
 inline constexpr int kSurfaceCount = 6;
@@ -28,6 +23,7 @@ const char* surfaceName(Surface surface);
 //   floor      origin (-W/2, 0, 0)   s: +x  t: -z     t in [-nearM, L]
 //   ceiling    origin (-W/2, H, -L)  s: +x  t: +z     t in [0, L + nearM]
 //   near end   origin (+W/2, 0, 0)   s: -x  t: +y     s in [0, W]   (faces -z)
-Panel surfacePanel(Surface surface, const CorridorBox& box, double nearM = 0.0);
+// `box`: the corridor's measured width, height and length.
+Panel surfacePanel(Surface surface, const metrology::Dimensions& box, double nearM = 0.0);
 
 }  // namespace pw::modeling

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include <glm/gtc/constants.hpp>
 
@@ -21,7 +20,7 @@ double smoothstep(double x) { return x * x * (3.0 - 2.0 * x); }
 
 struct Walker {
   const Layout& layout;
-  const std::vector<CorridorBox>& boxes;
+  const std::vector<metrology::Dimensions>& boxes;
   const BuildingPlan& plan;
   const TourOptions& options;
   std::vector<glm::dvec3> points;
@@ -72,7 +71,7 @@ struct Walker {
 
 double yawOf(const glm::dvec3& d) { return std::atan2(-d.x, -d.z); }
 
-std::vector<glm::dvec3> tourWaypoints(const Layout& layout, const std::vector<CorridorBox>& boxes,
+std::vector<glm::dvec3> tourWaypoints(const Layout& layout, const std::vector<metrology::Dimensions>& boxes,
                                       const BuildingPlan& plan, const TourOptions& options) {
   Walker walker{layout, boxes, plan, options, {}};
   if (!boxes.empty()) walker.walk(0, options.startZ);
@@ -176,34 +175,6 @@ std::vector<engine::Camera> TourPath::cameras(int frames, float fieldOfViewRad) 
     out.push_back(camera);
   }
   return out;
-}
-
-namespace {
-constexpr const char* kTourTag = "photowalk-tour";
-}
-
-std::string encodeTourInfo(const std::vector<glm::dvec3>& waypoints) {
-  std::ostringstream out;
-  out.precision(6);
-  out << kTourTag;
-  for (const glm::dvec3& p : waypoints) out << ' ' << p.x << ' ' << p.y << ' ' << p.z;
-  return out.str();
-}
-
-std::optional<std::vector<glm::dvec3>> decodeTourInfo(const std::vector<std::string>& info) {
-  for (const std::string& line : info) {
-    std::istringstream in(line);
-    std::string tag;
-    if (!(in >> tag) || tag != kTourTag) continue;
-    std::vector<glm::dvec3> points;
-    glm::dvec3 p;
-    while (in >> p.x >> p.y >> p.z) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return std::nullopt;
-      points.push_back(p);
-    }
-    if (points.size() >= 2) return points;
-  }
-  return std::nullopt;
 }
 
 }  // namespace pw::modeling

@@ -4,8 +4,6 @@
 // walk runs at a steady speed.
 #pragma once
 
-#include <optional>
-#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -26,7 +24,7 @@ struct TourOptions {
 
 // The walk as a polyline in world space (before rounding), from `startZ` in the
 // first corridor through every corridor reachable by attachments, back to the start.
-std::vector<glm::dvec3> tourWaypoints(const Layout& layout, const std::vector<CorridorBox>& boxes,
+std::vector<glm::dvec3> tourWaypoints(const Layout& layout, const std::vector<metrology::Dimensions>& boxes,
                                       const BuildingPlan& plan, const TourOptions& options);
 
 // A position and heading at any time of the walk along `waypoints`.
@@ -51,11 +49,5 @@ class TourPath {
 };
 
 double yawOf(const glm::dvec3& direction);  // 0 for -Z, +pi/2 for -X (turning left)
-
-// A model carries its tour in a WorldInfo info line, so that `photowalk tour` can
-// walk a building it only has as a .wrl: "photowalk-tour x y z x y z ...".
-std::string encodeTourInfo(const std::vector<glm::dvec3>& waypoints);
-// The waypoints of the first tour line among `info`, if any.
-std::optional<std::vector<glm::dvec3>> decodeTourInfo(const std::vector<std::string>& info);
 
 }  // namespace pw::modeling

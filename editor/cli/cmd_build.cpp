@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "editor/cli/command.h"
 #include "modeling/pipeline.h"
@@ -20,7 +21,7 @@ constexpr const char* kUsage =
     "true-scale textures and writes the model: OUT.wrl (or .wrl.gz) with the textures\n"
     "beside it. Several shots without a layout are joined end to end; a layout file\n"
     "places them and opens the walls between them (README: Layout files).\n\n"
-    "  -o, --output OUT.wrl  the model (written atomically)\n"
+    "  -o, --output OUT.wrl  the model (written atomically; missing folders are created)\n"
     "  --layout LAYOUT.json  a building of several corridors\n"
     "  --gltf OUT.glb        also write binary glTF 2.0 (.gltf: JSON with embedded data)\n"
     "  --lit                 Materials, lights along the ceiling and the headlight (the\n"
@@ -32,6 +33,28 @@ constexpr const char* kUsage =
 
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The folders missing above `file`, created, deepest last, so that a failed build can
+// take them away again. One that cannot be made is left to the write to report.
+std::vector<fs::path> createFoldersFor(const fs::path& file) {
+  std::vector<fs::path> missing;
+  std::error_code ec;
+  for (fs::path folder = file.parent_path(); !folder.empty() && !fs::exists(folder, ec); folder = folder.parent_path()) {
+    missing.insert(missing.begin(), folder);
+    if (folder == folder.parent_path()) break;
+  }
+  std::vector<fs::path> created;
+  for (const fs::path& folder : missing) {
+    if (!fs::create_directory(folder, ec)) break;
+    created.push_back(folder);
+  }
+  return created;
+}
+
+void removeFolders(const std::vector<fs::path>& folders) {
+  std::error_code ec;
+  for (auto folder = folders.rbegin(); folder != folders.rend(); ++folder) fs::remove(*folder, ec);  // only if empty
 }
 
 int runBuild(Args& args) {
@@ -78,14 +101,22 @@ int runBuild(Args& args) {
   auto model = modeling::buildModel(layout, options, measureOptions);
   if (!model) return fail(model.message());
 
-  // Everything that can fail on the input has failed by now; write the files.
+  // Everything that can fail on the input has failed by now; write the files, into
+  // folders made for them if need be (as tour does).
+  std::vector<fs::path> created = createFoldersFor(*output);
   if (gltfPath) {
-    if (auto written = engine::writeGltf(model->scene, *gltfPath); !written) return fail(written.message());
+    const std::vector<fs::path> forGltf = createFoldersFor(*gltfPath);
+    created.insert(created.end(), forGltf.begin(), forGltf.end());
+    if (auto written = engine::writeGltf(model->scene, *gltfPath); !written) {
+      removeFolders(created);
+      return fail(written.message());
+    }
   }
   if (auto written = engine::writeVrml(model->scene, *output, vrmlOptions); !written) {
-    // No half of a model: the glTF written a moment ago goes too.
+    // No half of a model: the glTF written a moment ago goes too, and the folders made.
     std::error_code ec;
     if (gltfPath) fs::remove(*gltfPath, ec);
+    removeFolders(created);
     return fail(written.message());
   }
 

@@ -5,7 +5,6 @@
 
 #include "editor/cli/command.h"
 #include "engine/io/model_io.h"
-#include "modeling/corridor_model.h"
 #include "modeling/pipeline.h"
 #include "engine/gpu/renderer.h"
 #include "engine/scene/camera.h"
@@ -24,9 +23,11 @@ constexpr const char* kUsage =
     "                        description (default 1; a scene without viewpoints is\n"
     "                        seen whole from +Z)\n"
     "  --camera-from SHOT    the camera that took the shot's photo, as measured, with its\n"
-    "                        focal length and principal point, at the photo's size (unless\n"
-    "                        --size): the frame lines up with the photo pixel for pixel when\n"
-    "                        SCENE was built from that shot (its first corridor)\n"
+    "                        focal length and principal point, at the photo's size: the\n"
+    "                        frame lines up with the photo pixel for pixel when SCENE was\n"
+    "                        built from that shot (its first corridor), as its Photo\n"
+    "                        viewpoint does; with --size, the photo scaled to the frame's\n"
+    "                        smaller side about its centre\n"
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "                        (as PW_DEVICE=cpu)\n"
     "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n\n"
@@ -64,20 +65,12 @@ int runRender(Args& args) {
   if (viewpointText && cameraFrom) return fail("give --viewpoint or --camera-from, not both");
   engine::Camera camera;
   if (cameraFrom) {
-    // The shot's measured camera, placed as `build` placed its corridor (the first).
-    auto measured = modeling::measureShotFile(*cameraFrom);
-    if (!measured) return fail(measured.message());
-    camera = modeling::photoCamera(measured->measurement, glm::dmat4(1.0));
-    if (!sizeText) size = {measured->loaded.image.cols, measured->loaded.image.rows};
-    if (size != std::pair{measured->loaded.image.cols, measured->loaded.image.rows}) {
-      // Keep the photo's field of view and principal point in proportion.
-      const double scale = static_cast<double>(size.first) / measured->loaded.image.cols;
-      auto& k = *camera.intrinsics;
-      k.focalXPx *= scale;
-      k.focalYPx *= static_cast<double>(size.second) / measured->loaded.image.rows;
-      k.principalU = (k.principalU + 0.5) * scale - 0.5;
-      k.principalV = (k.principalV + 0.5) * size.second / measured->loaded.image.rows - 0.5;
-    }
+    // The shot's measured camera, as `build` makes the Photo viewpoint of a model built
+    // from it; at another --size the renderer fits the photo's lens to the frame.
+    auto shotCamera = modeling::shotCamera(*cameraFrom);
+    if (!shotCamera) return fail(shotCamera.message());
+    camera = *shotCamera;
+    if (!sizeText) size = {camera.intrinsics->imageWidth, camera.intrinsics->imageHeight};
   } else {
     const size_t count = scene->viewpoints.size();
     size_t index = 0;

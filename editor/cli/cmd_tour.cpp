@@ -189,10 +189,10 @@ int runTour(Args& args) {
   if (!scene) return fail(scene.message());
 
   std::vector<engine::Camera> cameras;
-  const float fov = scene->viewpoints.empty() ? 0.785398f : scene->viewpoints[0].fieldOfViewRad;
-  if (auto waypoints = modeling::decodeTourInfo(scene->info)) {
-    modeling::TourOptions tourOptions;
-    cameras = modeling::TourPath(*waypoints, tourOptions).cameras(frames, fov);
+  const float fov = scene->viewpoints.empty() ? engine::kDefaultFieldOfViewRad : scene->viewpoints[0].fieldOfViewRad;
+  if (scene->tour.size() >= 2) {
+    const std::vector<glm::dvec3> waypoints(scene->tour.begin(), scene->tour.end());
+    cameras = modeling::TourPath(waypoints, modeling::TourOptions{}).cameras(frames, fov);
   } else {
     cameras = viewpointTour(*scene, frames);
   }

@@ -177,7 +177,8 @@ void WalkMode::goToViewpoint(int index) {
 }
 
 engine::Camera WalkMode::currentCamera() const {
-  const float fov = scene_.viewpoints.empty() ? 0.785398f : scene_.viewpoints[viewpoint_].fieldOfViewRad;
+  const engine::Viewpoint* at = scene_.viewpoints.empty() ? nullptr : &scene_.viewpoints[viewpoint_];
+  const float fov = at ? at->fieldOfViewRad : engine::kDefaultFieldOfViewRad;
   if (transition_) {
     const float u = static_cast<float>(transition_->frame) / kTransitionFrames;
     const float ease = u * u * (3 - 2 * u);
@@ -185,10 +186,23 @@ engine::Camera WalkMode::currentCamera() const {
     c.position = glm::mix(transition_->from.position, transition_->to.position, ease);
     c.orientation = glm::slerp(transition_->from.orientation, transition_->to.orientation, ease);
     c.fieldOfViewRad = glm::mix(transition_->from.fieldOfViewRad, transition_->to.fieldOfViewRad, ease);
+    c.intrinsics.reset();  // the glide blends fields of view; the viewpoint's lens comes on arrival
     c.nearM = avatar_.camera(fov).nearM;
     return c;
   }
-  return avatar_.camera(fov);
+  engine::Camera c = avatar_.camera(fov);
+  if (at) {
+    // The viewpoint's lens: a photo's exact intrinsics (principal point included) when it
+    // has them. Standing where it put the eye, looking its way, the view is the
+    // viewpoint's own, roll included (the avatar keeps none): at "Photo", the photo.
+    c.intrinsics = at->intrinsics;
+    const engine::Camera exact = engine::cameraFromViewpoint(*at);
+    if (glm::vec3(avatar_.eye()) == exact.position &&
+        glm::dot(engine::forwardOf(c), engine::forwardOf(exact)) > 1.0f - 1e-6f) {
+      c.orientation = exact.orientation;
+    }
+  }
+  return c;
 }
 
 void WalkMode::update(app::Shell&, double stepS) {

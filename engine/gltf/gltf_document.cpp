@@ -9,7 +9,7 @@
 
 #include "engine/gltf/gltf_mapping.h"
 #include "engine/scene/camera.h"
-#include "engine/scene/texture_source.h"
+#include "engine/scene/model_info.h"
 
 namespace pw::engine::gltf {
 
@@ -77,7 +77,7 @@ int DocumentBuilder::addRootNode(Json node) {
 
 Status DocumentBuilder::build() {
   doc_["asset"] = Json{{"version", "2.0"}, {"generator", "photowalk"}};
-  const std::vector<std::string> info = infoWithTextureSources(scene_, [](const Texture& texture) {
+  const std::vector<std::string> info = infoForFile(scene_, [](const Texture& texture) {
     return std::filesystem::path(texture.url).filename().string();  // the image's name (textureFor)
   });
   if (!info.empty()) doc_["asset"]["extras"] = Json{{"info", info}};

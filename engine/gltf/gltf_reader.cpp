@@ -7,7 +7,7 @@
 
 #include "base/atomic_file.h"
 #include "engine/gltf/gltf_read_source.h"
-#include "engine/scene/texture_source.h"
+#include "engine/scene/model_info.h"
 
 namespace pw::engine {
 
@@ -141,7 +141,7 @@ Result<Scene> parseGltf(std::span<const uint8_t> bytes, const std::filesystem::p
   PW_TRY(loadBuffers(source, bin, hasBin));
   try {
     auto scene = gltf::buildScene(source);
-    if (scene) applyTextureSources(*scene);
+    if (scene) takeModelInfo(*scene);
     return scene;
   } catch (const Json::exception& e) {
     // Every member is checked before use; this only turns an oversight into an error.

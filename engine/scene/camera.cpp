@@ -27,6 +27,7 @@ Camera cameraFromViewpoint(const Viewpoint& viewpoint) {
   camera.position = viewpoint.position;
   camera.orientation = orientationFromAxisAngle(viewpoint.orientation);
   camera.fieldOfViewRad = viewpoint.fieldOfViewRad;
+  camera.intrinsics = viewpoint.intrinsics;
   return camera;
 }
 
@@ -36,15 +37,35 @@ Viewpoint viewpointFromCamera(const Camera& camera, std::string description) {
   v.position = camera.position;
   v.orientation = axisAngleFromOrientation(camera.orientation);
   v.fieldOfViewRad = camera.fieldOfViewRad;
+  v.intrinsics = camera.intrinsics;
   return v;
 }
 
 Intrinsics intrinsicsFor(const Camera& camera, int width, int height) {
-  if (camera.intrinsics) return *camera.intrinsics;
+  if (camera.intrinsics) {
+    Intrinsics k = *camera.intrinsics;
+    if (k.imageWidth <= 0 || k.imageHeight <= 0 || (k.imageWidth == width && k.imageHeight == height)) return k;
+    // Pixel edges: the image's centre (w/2, h/2) lands on the frame's, scaled by s.
+    const double s = static_cast<double>(std::min(width, height)) / std::min(k.imageWidth, k.imageHeight);
+    k.focalXPx *= s;
+    k.focalYPx *= s;
+    k.principalU = 0.5 * width - 0.5 + s * (k.principalU + 0.5 - 0.5 * k.imageWidth);
+    k.principalV = 0.5 * height - 0.5 + s * (k.principalV + 0.5 - 0.5 * k.imageHeight);
+    k.imageWidth = width;
+    k.imageHeight = height;
+    return k;
+  }
   // VRML97 6.53: fieldOfView is the angle across the smaller dimension.
   const double halfTan = std::tan(std::clamp(camera.fieldOfViewRad, 1e-4f, 3.1f) * 0.5);
   const double focal = 0.5 * std::min(width, height) / halfTan;
-  return {focal, focal, (width - 1) * 0.5, (height - 1) * 0.5};
+  return {focal, focal, (width - 1) * 0.5, (height - 1) * 0.5, width, height};
+}
+
+float fieldOfViewOf(const Intrinsics& k) {
+  const bool wide = k.imageWidth >= k.imageHeight;
+  const double side = wide ? k.imageHeight : k.imageWidth;
+  const double focal = wide ? k.focalYPx : k.focalXPx;
+  return static_cast<float>(2.0 * std::atan(0.5 * side / focal));
 }
 
 glm::mat4 viewMatrix(const Camera& camera) {

@@ -15,20 +15,12 @@
 
 namespace pw::engine {
 
-// Pinhole intrinsics in pixels for an image of a given size.
-struct Intrinsics {
-  double focalXPx = 0;
-  double focalYPx = 0;
-  double principalU = 0;  // pixel centres at integer coordinates
-  double principalV = 0;
-};
-
 struct Camera {
   glm::vec3 position{0.0f};
   glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};  // camera-local axes to world
-  float fieldOfViewRad = 0.785398f;  // VRML meaning: the smaller of the two angles
-  // When set, overrides fieldOfViewRad: a photo's camera, for frames that must line
-  // up with the photo pixel for pixel. Only valid for the image size it was made for.
+  float fieldOfViewRad = kDefaultFieldOfViewRad;  // VRML meaning: the smaller of the two angles
+  // When set, overrides fieldOfViewRad: a photo's camera (scene.h), for frames that
+  // line up with the photo pixel for pixel at its size (intrinsicsFor, other sizes).
   std::optional<Intrinsics> intrinsics;
   float nearM = 0.05f;
   float farM = 2000.0f;
@@ -37,11 +29,23 @@ struct Camera {
 glm::quat orientationFromAxisAngle(const glm::vec4& axisAngle);
 glm::vec4 axisAngleFromOrientation(const glm::quat& q);  // angle in [0, pi], axis unit
 
+// Both carry the intrinsics, when there are some, along with the field of view.
 Camera cameraFromViewpoint(const Viewpoint& viewpoint);
 Viewpoint viewpointFromCamera(const Camera& camera, std::string description);
 
-// The intrinsics a camera has when drawn into a width x height frame.
+// The intrinsics a camera has when drawn into a width x height frame. Without
+// Camera::intrinsics: fieldOfViewRad across the frame's smaller side (VRML97 6.53),
+// the principal point at the frame's centre. With intrinsics for an image of another
+// size: that image scaled about its centre onto the frame's centre by the ratio of
+// the smaller sides (so the lens sees what its VRML field of view sees, and the
+// principal point keeps its offset from the centre in proportion); at the image's own
+// size, the intrinsics as they are; with no image size, as they are.
 Intrinsics intrinsicsFor(const Camera& camera, int width, int height);
+
+// The field of view (VRML meaning) of intrinsics: the angle across the image's smaller
+// side, through the image's centre line (the principal point's offset is not an angle
+// VRML97 can say).
+float fieldOfViewOf(const Intrinsics& intrinsics);
 
 glm::mat4 viewMatrix(const Camera& camera);  // world to camera
 glm::mat4 projectionMatrix(const Camera& camera, int width, int height);  // camera to Vulkan clip

@@ -99,13 +99,39 @@ struct Light {
   bool operator==(const Light&) const = default;
 };
 
+// VRML97's default Viewpoint fieldOfView (ISO/IEC 14772-1, 6.53): pi/4.
+inline constexpr float kDefaultFieldOfViewRad = 0.785398f;
+
+// A photo's pinhole camera, in pixels of an imageWidth x imageHeight image with pixel
+// centres at integer coordinates (u right, v down; OpenCV's convention): the lens that
+// took it, principal point included, which a field of view alone cannot say.
+// camera.h's intrinsicsFor fits it to frames of other sizes. metrology::Intrinsics is
+// the camera a measurement solves for; the engine may not see metrology (nor metrology
+// the engine), so modeling::photoCamera converts one into the other.
+struct Intrinsics {
+  double focalXPx = 0;
+  double focalYPx = 0;
+  double principalU = 0;
+  double principalV = 0;
+  // The image the figures are in pixels of; 0 x 0: whatever frame is drawn, taken as
+  // they are.
+  int imageWidth = 0;
+  int imageHeight = 0;
+
+  bool operator==(const Intrinsics&) const = default;
+};
+
 // VRML97 Viewpoint: the camera looks along its local -Z with +Y up, rotated by
 // `orientation` (axis x, y, z and angle w in radians) and placed at `position`.
 struct Viewpoint {
   std::string description;
   glm::vec3 position{0.0f, 0.0f, 10.0f};
   glm::vec4 orientation{0.0f, 0.0f, 1.0f, 0.0f};
-  float fieldOfViewRad = 0.785398f;  // the smaller of the horizontal and vertical angles
+  float fieldOfViewRad = kDefaultFieldOfViewRad;  // the smaller of the horizontal and vertical angles
+  // The exact lens of a photo's camera (photowalk build's "Photo" viewpoint): when set,
+  // it is what photowalk draws with; fieldOfViewRad keeps the nearest VRML field of
+  // view for other viewers. Files keep it as a photowalk extension (model_info.h).
+  std::optional<Intrinsics> intrinsics;
 
   bool operator==(const Viewpoint&) const = default;
 };
@@ -130,7 +156,11 @@ struct Scene {
   NavigationInfo navigation;
   glm::vec3 backgroundColor{0.0f};    // VRML Background skyColor[0]
   std::string title;                  // WorldInfo title
-  std::vector<std::string> info;      // WorldInfo info
+  std::vector<std::string> info;      // WorldInfo info, the user's own lines
+  // The walk through the model that `photowalk tour` takes (photowalk build writes it),
+  // as waypoints in world space, metres; empty: none. Files keep it as a photowalk
+  // extension (model_info.h).
+  std::vector<glm::vec3> tour;
 };
 
 // Axis-aligned bounds of a point set; empty() when it holds nothing.

@@ -5,7 +5,8 @@
 // H column by column, mapping the scene's texture coordinates (s, t, 1), t = 0 at the
 // bottom, to photo pixels; URL, the rest of the line, as the file names the texture
 // (the VRML ImageTexture url, the glTF image name). Readers take these lines out of
-// Scene::info again and put each on the textures with that url.
+// Scene::info again and put each on the textures with that url. Writers and readers
+// reach these through model_info.h, with photowalk's other lines.
 #pragma once
 
 #include <functional>

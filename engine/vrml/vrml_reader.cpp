@@ -4,7 +4,7 @@
 #include <unordered_map>
 
 #include "base/atomic_file.h"
-#include "engine/scene/texture_source.h"
+#include "engine/scene/model_info.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_parser.h"
 #include "engine/vrml/vrml_scene_builder.h"
@@ -90,7 +90,7 @@ Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics) {
   auto document = loader.load(path);
   if (!document) return document.error();
   auto scene = vrml::buildScene(*document, loader, diagnostics);
-  if (scene) applyTextureSources(*scene);
+  if (scene) takeModelInfo(*scene);
   return scene;
 }
 
@@ -100,7 +100,7 @@ Result<Scene> readVrmlString(std::string_view text, const fs::path& baseDir, Dia
   if (!document) return document.error();
   FileLoader loader(diagnostics);
   auto scene = vrml::buildScene(std::make_shared<vrml::Document>(std::move(*document)), loader, diagnostics);
-  if (scene) applyTextureSources(*scene);
+  if (scene) takeModelInfo(*scene);
   return scene;
 }
 

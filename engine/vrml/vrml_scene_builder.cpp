@@ -257,8 +257,8 @@ void Builder::addViewpoint(const Node& node, const glm::dmat4& m) {
   v.fieldOfViewRad = static_cast<float>(getDouble(node, "fieldOfView"));
   if (!(v.fieldOfViewRad > 0.0f && v.fieldOfViewRad < 3.14159f)) {
     warn(node.where() + ": Viewpoint fieldOfView " + std::to_string(v.fieldOfViewRad) +
-         " is outside (0, pi); using the default 0.785398");
-    v.fieldOfViewRad = 0.785398f;
+         " is outside (0, pi); using the default " + std::to_string(kDefaultFieldOfViewRad));
+    v.fieldOfViewRad = kDefaultFieldOfViewRad;
   }
   if (isIdentity(m)) {
     v.position = glm::vec3(p);

@@ -6,7 +6,7 @@
 #include <unordered_set>
 
 #include "base/atomic_file.h"
-#include "engine/scene/texture_source.h"
+#include "engine/scene/model_info.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_tokenizer.h"
 #include "engine/vrml/vrml_transform.h"
@@ -198,7 +198,7 @@ void Writer::writeHeader() {
   line("# Written by photowalk");
   line("");
   const std::string& title = options_.title.empty() ? scene_.title : options_.title;
-  const std::vector<std::string> info = infoWithTextureSources(scene_, [&](const Texture& texture) {
+  const std::vector<std::string> info = infoForFile(scene_, [&](const Texture& texture) {
     auto url = urls_.find(texture.image.get());
     return url == urls_.end() ? std::string() : url->second;
   });

@@ -91,7 +91,9 @@ void expectSameScene(const Scene& original, const Scene& read) {
     EXPECT_NEAR(b.fieldOfViewRad, a.fieldOfViewRad, 1e-6f);
     const glm::vec3 lookA = forwardOf(cameraFromViewpoint(a)), lookB = forwardOf(cameraFromViewpoint(b));
     EXPECT_NEAR(glm::length(lookB - lookA), 0.0f, 1e-5f);
+    EXPECT_EQ(b.intrinsics, a.intrinsics);  // exactly, through asset.extras.info
   }
+  EXPECT_EQ(read.tour, original.tour);
   size_t onLights = 0;
   for (const Light& light : original.lights) onLights += light.on ? 1 : 0;
   ASSERT_EQ(read.lights.size(), onLights);

@@ -1,5 +1,7 @@
 #include "tests/gltf/sample_scenes.h"
 
+#include <cmath>
+
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -179,11 +181,15 @@ Scene viewpoints() {
   entrance.description = "Entrance";
   entrance.position = {0, 1.6f, 5};
   entrance.fieldOfViewRad = 0.9f;
+  // A photo's lens, principal point off centre (photowalk's extension, model_info.h).
+  const double focalPx = 240.0 / std::tan(0.45);
+  entrance.intrinsics = Intrinsics{focalPx, focalPx, 330.25, 231.5, 640, 480};
   Viewpoint side;
   side.description = "Side";
   side.position = {4, 1.6f, -2};
   side.orientation = {0, 1, 0, glm::half_pi<float>()};  // looks along -X
   scene.viewpoints = {entrance, side};
+  scene.tour = {{0, 1.6f, 5}, {0, 1.6f, -1.25f}, {4, 1.6f, -2}};
   scene.navigation.avatarRadiusM = 0.3f;
   scene.navigation.visibilityLimitM = 80.0f;
   return scene;
@@ -229,6 +235,7 @@ Scene everything() {
     all.shapes.insert(all.shapes.end(), part.shapes.begin(), part.shapes.end());
     all.lights.insert(all.lights.end(), part.lights.begin(), part.lights.end());
     all.viewpoints.insert(all.viewpoints.end(), part.viewpoints.begin(), part.viewpoints.end());
+    if (!part.tour.empty()) all.tour = part.tour;
   }
   all.title = "photowalk sample scenes";
   all.info = {"written by the glTF tests"};

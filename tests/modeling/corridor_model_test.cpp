@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -10,6 +11,7 @@
 
 #include "engine/scene/collision.h"
 #include "metrology/measure.h"
+#include "metrology/rectify.h"
 
 namespace pw::modeling {
 namespace {
@@ -99,10 +101,45 @@ TEST_F(CorridorModelTest, TexturePixelsMatchThePhotoThroughTheCamera) {
   EXPECT_GT(mirrored, 4 * aligned);
 }
 
+// `build` and `rectify` cut textures with the same code (metrology/rectify.h): at the
+// same resolution the model's far wall is `rectify`'s far wall, texel for texel.
+TEST_F(CorridorModelTest, FarWallIsCutAsRectifyCutsIt) {
+  ModelOptions options;
+  options.pxPerM = 60;
+  auto model = makeCorridorModel("a", photo_, measurement_, false, options);
+  ASSERT_TRUE(model.ok()) << model.message();
+  metrology::RectifyOptions rectifyOptions;
+  rectifyOptions.pxPerM = 60;
+  auto planes = metrology::rectifyCorridor(photo_, measurement_, rectifyOptions);
+  ASSERT_TRUE(planes.ok()) << planes.message();
+  const engine::Image& built = model->textures[static_cast<int>(Surface::kFarWall)]->image;
+  const cv::Mat& rectified = (*planes)[static_cast<int>(metrology::Plane::kFarWall)].image;
+  ASSERT_EQ(built.width, rectified.cols);
+  ASSERT_EQ(built.height, rectified.rows);
+  int differing = 0, largest = 0;
+  for (int y = 0; y < rectified.rows; ++y) {
+    for (int x = 0; x < rectified.cols; ++x) {
+      const cv::Vec3b bgr = rectified.at<cv::Vec3b>(y, x);
+      const uint8_t* rgba = built.pixel(x, y);
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(rgba[c]) - int(bgr[2 - c])));
+      differing += d > 0;
+      largest = std::max(largest, d);
+    }
+  }
+  std::printf("far wall, build vs rectify: %d of %d texels differ, by %d at most\n", differing,
+              rectified.rows * rectified.cols, largest);
+  // Measured: 0 texels differ. The same homography up to rounding (the panel's frame and
+  // the corners'): at most 1/255 on a few texels; a texture cut another way (another
+  // filter, flipped, shifted by a texel) differs on most of them.
+  EXPECT_LE(largest, 1);
+  EXPECT_LT(differing, rectified.rows * rectified.cols / 100);
+}
+
 TEST_F(CorridorModelTest, SceneHasFivePlanesNearStripsViewpointsAndNoMaterials) {
   auto model = makeCorridorModel("a", photo_, measurement_, false, {});
   ASSERT_TRUE(model.ok());
-  const std::vector<CorridorBox> boxes{model->box};
+  const std::vector<metrology::Dimensions> boxes{model->box};
   auto plan = planBuilding(chainLayout({"a.json"}), boxes);
   ASSERT_TRUE(plan.ok());
   const engine::Scene scene = makeBuildingScene({*model}, *plan, {});
@@ -121,6 +158,37 @@ TEST_F(CorridorModelTest, SceneHasFivePlanesNearStripsViewpointsAndNoMaterials) 
   EXPECT_NEAR(down->distance, 1.5f, 0.01f);
   EXPECT_TRUE(world.raycast(eye, {-1, 0, 0}, 10));
   EXPECT_TRUE(world.raycast(eye, {1, 0, 0}, 10));
+}
+
+// The Overview is a cutaway from above: the eye is between the walls (so both are seen
+// from inside, their drawn side), above the ceiling (seen from behind, not drawn, so it
+// does not hide the floor), before the far wall, and the whole model is in view.
+TEST_F(CorridorModelTest, OverviewSeesEveryWallFromInsideAndTheWholeModel) {
+  auto model = makeCorridorModel("a", photo_, measurement_, false, {});
+  ASSERT_TRUE(model.ok());
+  auto plan = planBuilding(chainLayout({"a.json"}), std::vector<metrology::Dimensions>{model->box});
+  ASSERT_TRUE(plan.ok());
+  const engine::Scene scene = makeBuildingScene({*model}, *plan, {});
+  ASSERT_GE(scene.viewpoints.size(), 4u);
+  ASSERT_EQ(scene.viewpoints[3].description, "Overview");
+  const engine::Camera camera = engine::cameraFromViewpoint(scene.viewpoints[3]);
+  const glm::vec3 eye = camera.position;  // corridor a's frame is the world
+  EXPECT_LT(std::abs(eye.x), 0.5 * model->box.widthM - 0.1) << "between the walls";
+  EXPECT_GT(eye.y, model->box.heightM + 0.5) << "above the ceiling";
+  EXPECT_GT(eye.z, 0.0) << "behind the near end";
+  const engine::Bounds bounds = engine::sceneBounds(scene);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner(i & 1 ? bounds.max.x : bounds.min.x, i & 2 ? bounds.max.y : bounds.min.y,
+                           i & 4 ? bounds.max.z : bounds.min.z);
+    for (const glm::ivec2 frame : {glm::ivec2(320, 180), glm::ivec2(180, 320)}) {
+      const glm::dvec3 px = engine::projectToPixel(camera, frame.x, frame.y, corner);
+      EXPECT_GT(px.z, 0.0);
+      EXPECT_GE(px.x, -0.5) << "corner " << i;
+      EXPECT_LE(px.x, frame.x - 0.5) << "corner " << i;
+      EXPECT_GE(px.y, -0.5) << "corner " << i;
+      EXPECT_LE(px.y, frame.y - 0.5) << "corner " << i;
+    }
+  }
 }
 
 TEST_F(CorridorModelTest, LitModelHasMaterialsLightsAndHeadlight) {

@@ -27,7 +27,7 @@ TEST(Panel, PlainPanelIsTwoTrianglesFacingItsFront) {
 }
 
 TEST(Panel, EverySurfaceFacesIntoTheCorridor) {
-  const CorridorBox box{2, 3, 10};
+  const metrology::Dimensions box{2, 3, 10};
   const glm::dvec3 inside(0, 1.5, -5);
   for (int i = 0; i < kSurfaceCount; ++i) {
     const Panel p = surfacePanel(static_cast<Surface>(i), box, 1.0);

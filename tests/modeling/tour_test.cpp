@@ -8,7 +8,7 @@ namespace pw::modeling {
 namespace {
 
 // Is p inside corridor c of the plan (with a margin from its walls)?
-bool insideSomeCorridor(const BuildingPlan& plan, const std::vector<CorridorBox>& boxes, const glm::dvec3& p,
+bool insideSomeCorridor(const BuildingPlan& plan, const std::vector<metrology::Dimensions>& boxes, const glm::dvec3& p,
                         double startZ) {
   for (size_t c = 0; c < boxes.size(); ++c) {
     const glm::dvec3 local = glm::dvec3(glm::inverse(plan.worldFromCorridor[c]) * glm::dvec4(p, 1.0));
@@ -23,7 +23,7 @@ bool insideSomeCorridor(const BuildingPlan& plan, const std::vector<CorridorBox>
 
 TEST(Tour, SingleCorridorWalksToTheEndAndBack) {
   const Layout layout = chainLayout({"a.json"});
-  const std::vector<CorridorBox> boxes{{2, 3, 10}};
+  const std::vector<metrology::Dimensions> boxes{{2, 3, 10}};
   auto plan = planBuilding(layout, boxes);
   ASSERT_TRUE(plan.ok());
   TourOptions options;
@@ -47,7 +47,7 @@ TEST(Tour, BuildingTourStaysInsideAndMovesSmoothly) {
   Layout layout = chainLayout({"a.json", "b.json", "c.json"});
   layout.corridors[1].attach = Attachment{0, Side::kLeft, 5.0};
   layout.corridors[2].attach = Attachment{0, Side::kFar, 0.0};
-  const std::vector<CorridorBox> boxes{{2.4, 2.8, 10}, {2, 2.6, 6}, {3, 3, 8}};
+  const std::vector<metrology::Dimensions> boxes{{2.4, 2.8, 10}, {2, 2.6, 6}, {3, 3, 8}};
   auto plan = planBuilding(layout, boxes);
   ASSERT_TRUE(plan.ok()) << plan.message();
   TourOptions options;
@@ -70,15 +70,6 @@ TEST(Tour, BuildingTourStaysInsideAndMovesSmoothly) {
   }
   EXPECT_LT(farthestX, -1.2 - 6 + 1.5);     // went down the left wing
   EXPECT_LT(farthestZ, -10.0 - 8 + 1.5);    // and through to the far corridor's end
-}
-
-TEST(Tour, WaypointsSurviveTheModelsInfoLine) {
-  const std::vector<glm::dvec3> points{{0, 1.6, 2.5}, {0, 1.6, -8.25}, {-3.125, 1.6, -4}};
-  auto back = decodeTourInfo({"something else", encodeTourInfo(points)});
-  ASSERT_TRUE(back);
-  ASSERT_EQ(back->size(), 3u);
-  EXPECT_NEAR((*back)[2].x, -3.125, 1e-9);
-  EXPECT_FALSE(decodeTourInfo({"photowalk-tour 1 2"}));
 }
 
 }  // namespace

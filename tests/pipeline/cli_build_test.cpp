@@ -502,6 +502,23 @@ TEST(BuildCommand, GzipModelsReadBackToTheSameScene) {
 }
 
 
+// `build -o new/dir/m.wrl` makes new/dir (as tour makes its folder), and --gltf's
+// folder too: the model, its textures and the glTF land there and read back.
+TEST(BuildCommand, MakesTheOutputFolder) {
+  const GroundTruth a = loadGroundTruth("corridor_a");
+  const fs::path dir = freshDir("new_folder");
+  const fs::path model = dir / "new" / "dir" / "m.wrl", gltf = dir / "gl" / "tf" / "m.glb";
+  const CommandRun run = photowalk("build " + shellQuoted(a.shot) + " -o " + shellQuoted(model) + " --gltf " +
+                                   shellQuoted(gltf));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(fs::is_regular_file(model));
+  EXPECT_TRUE(fs::is_regular_file(gltf));
+  EXPECT_EQ(filesEndingIn(dir / "new" / "dir", ".png").size(), 5u) << "the textures beside the model";
+  auto scene = readModel(model);
+  ASSERT_TRUE(scene);
+  EXPECT_EQ(scene->shapes.size(), 9u);
+}
+
 // ---------------------------------------------------------------------------------
 // 7. Bad input from the command line: one line starting with "error:" that names the
 // problem, exit code 1, and nothing in the output folder (no model, no texture, no
@@ -587,10 +604,12 @@ const BadInput kBadInputs[] = {
        writeText(out / "blocker", "");
        return "build " + shellQuoted(kShotA) + " -o " + shellQuoted(out / "blocker" / "m.wrl") + " --gltf " + shellQuoted(out / "m.glb");
      }, "Not a directory", {"blocker"}},
-    // Issue 12 asks that build create the folder; today it is an error.
-    {"OutputFolderMissing", [](const fs::path&, const fs::path& out) {
-       return "build " + shellQuoted(kShotA) + " -o " + shellQuoted(out / "new" / "dir" / "m.wrl");
-     }, "the folder", {}},
+    // A missing output folder is made (BuildCommand.MakesTheOutputFolder), but only for a
+    // model that was built: a failed build makes none.
+    {"OutputFolderMissing", [](const fs::path& in, const fs::path& out) {
+       return "build " + shellQuoted(in / "nosuch.json") + " -o " + shellQuoted(out / "new" / "dir" / "m.wrl") +
+              " --gltf " + shellQuoted(out / "other" / "m.glb");
+     }, "nosuch.json: no such file", {}},
     {"UnknownOption", [](const fs::path&, const fs::path& out) {
        return "build " + shellQuoted(kShotA) + " --frobnicate -o " + shellQuoted(out / "m.wrl");
      }, "unknown option --frobnicate", {}},

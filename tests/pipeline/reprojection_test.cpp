@@ -47,7 +47,8 @@ Psnr reprojection(const engine::Scene& scene, const BuiltModel& built, const met
   EXPECT_TRUE(renderer.ok()) << renderer.message();
   if (!renderer) return {};
   EXPECT_TRUE((*renderer)->setScene(scene).ok());
-  const engine::Camera camera = modeling::photoCamera(built.corridors[0].measurement, built.plan.worldFromCorridor[0]);
+  const engine::Camera camera = modeling::photoCamera(built.corridors[0].measurement, photo.cols, photo.rows,
+                                                      built.plan.worldFromCorridor[0]);
   auto image = (*renderer)->renderToImage(camera, photo.cols, photo.rows);
   EXPECT_TRUE(image.ok()) << image.message();
   if (!image) return {};

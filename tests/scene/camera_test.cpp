@@ -1,5 +1,7 @@
 #include "engine/scene/camera.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/constants.hpp>
@@ -48,6 +50,33 @@ TEST(Camera, ProjectionMatrixAgreesWithPixelProjection) {
   EXPECT_NEAR((ndc.y + 1) * 0.5 * h - 0.5, pixel.y, 1e-3);
   EXPECT_GT(ndc.z, 0.0);
   EXPECT_LT(ndc.z, 1.0);
+}
+
+// A photo's intrinsics drawn at the photo's size are used as they are; at another size
+// the photo is scaled about its centre by the ratio of the smaller sides, so a point
+// keeps its place relative to the image (here: half the frame, and a wider frame).
+TEST(Camera, PhotoIntrinsicsFitFramesOfOtherSizes) {
+  Camera camera;
+  camera.intrinsics = Intrinsics{760, 760, 541.5, 360, 1024, 768};
+  camera.fieldOfViewRad = 0.3f;  // ignored with intrinsics
+  const glm::vec3 world(0.4f, -0.3f, -3.0f);
+  const glm::dvec3 full = projectToPixel(camera, 1024, 768, world);
+  EXPECT_NEAR(full.x, 541.5 + 760 * 0.4 / 3.0, 1e-4);
+  EXPECT_NEAR(full.y, 360 + 760 * 0.3 / 3.0, 1e-4);
+  EXPECT_EQ(intrinsicsFor(camera, 1024, 768), *camera.intrinsics);
+  // Half size: pixel edges scale by 1/2 ((u + 0.5) / 2 - 0.5).
+  const glm::dvec3 half = projectToPixel(camera, 512, 384, world);
+  EXPECT_NEAR(half.x, (full.x + 0.5) / 2 - 0.5, 1e-4);
+  EXPECT_NEAR(half.y, (full.y + 0.5) / 2 - 0.5, 1e-4);
+  // 1280 x 768: the same scale (the smaller sides agree), 128 px more on each side.
+  const glm::dvec3 wide = projectToPixel(camera, 1280, 768, world);
+  EXPECT_NEAR(wide.x, full.x + 128, 1e-4);
+  EXPECT_NEAR(wide.y, full.y, 1e-4);
+  // Its field of view is the one across the smaller side.
+  EXPECT_NEAR(fieldOfViewOf(*camera.intrinsics), 2 * std::atan(384.0 / 760.0), 1e-6);
+  // A viewpoint carries them.
+  const Camera back = cameraFromViewpoint(viewpointFromCamera(camera, "Photo"));
+  EXPECT_EQ(back.intrinsics, camera.intrinsics);
 }
 
 TEST(Camera, DepthRangeIsZeroToOne) {

@@ -86,5 +86,29 @@ TEST(VrmlRoundTrip, AwkwardTransformsLightsAndFloats) {
   expectRoundTrip(s, "awkward");
 }
 
+// photowalk's own lines (model_info.h): a photo viewpoint's exact lens and the tour,
+// typed in memory, come back exactly; a viewpoint without them stays without.
+TEST(VrmlRoundTrip, PhotoIntrinsicsAndTourReadBackExactly) {
+  Scene s;
+  Viewpoint photo;
+  photo.description = "Photo";
+  photo.position = {0.5f, 1.65f, 6.0f};
+  photo.orientation = {0.1f, -0.99f, 0.05f, 0.16f};
+  photo.intrinsics = Intrinsics{760.0, 760.0, 541.5, 360.0, 1024, 768};
+  Viewpoint overview;
+  overview.description = "Overview";
+  s.viewpoints = {photo, overview};
+  s.tour = {{0, 1.65f, 5.5f}, {0, 1.65f, -15.0f}, {0.1f, 1.65f, 5.5f}};
+  s.info = {"a line of the user's own"};
+  expectRoundTrip(s, "photo_lines");
+  const fs::path written = outputDir() / "photo_lines.wrl";
+  auto back = readVrml(written, nullptr);
+  ASSERT_TRUE(back.ok()) << back.message();
+  EXPECT_EQ(back->info, s.info) << "photowalk's lines are taken out of the info";
+  ASSERT_TRUE(back->viewpoints[0].intrinsics);
+  EXPECT_EQ(back->viewpoints[0].intrinsics->principalU, 541.5);
+  EXPECT_FALSE(back->viewpoints[1].intrinsics);
+}
+
 }  // namespace
 }  // namespace pw::engine

@@ -65,6 +65,7 @@ std::string sceneDifference(const Scene& a, const Scene& b) {
   if (a.backgroundColor != b.backgroundColor) return "background colours differ";
   if (a.title != b.title) return "titles differ: '" + a.title + "' vs '" + b.title + "'";
   if (a.info != b.info) return "world info differs";
+  if (a.tour != b.tour) return "tours differ";
   return {};
 }
 
