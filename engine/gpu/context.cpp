@@ -223,6 +223,10 @@ Status Context::createDevice() {
     swapchain_ = std::any_of(props.begin(), props.end(),
                              [](const auto& p) { return !std::strcmp(p.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME); });
     if (swapchain_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    swapchainMutableFormat_ = swapchain_ && std::any_of(props.begin(), props.end(), [](const auto& p) {
+      return !std::strcmp(p.extensionName, VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME);
+    });
+    if (swapchainMutableFormat_) extensions.push_back(VK_KHR_SWAPCHAIN_MUTABLE_FORMAT_EXTENSION_NAME);
   }
 
   const float priority = 1.0f;

@@ -52,6 +52,9 @@ class Context {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   bool anisotropySupported() const { return anisotropy_; }
   bool swapchainSupported() const { return swapchain_; }
+  // VK_KHR_swapchain_mutable_format, enabled where offered: a swapchain image can also
+  // be viewed in another format of its class (the Presenter's UNORM overlay view).
+  bool swapchainMutableFormatSupported() const { return swapchainMutableFormat_; }
   bool validationEnabled() const { return messenger_.handle != VK_NULL_HANDLE; }
   ValidationLog& validationLog() { return *log_; }
   const std::vector<std::string>& notes() const { return notes_; }  // e.g. "validation layer missing"
@@ -98,6 +101,7 @@ class Context {
   uint32_t queueFamily_ = 0;
   bool anisotropy_ = false;
   bool swapchain_ = false;
+  bool swapchainMutableFormat_ = false;
 };
 
 }  // namespace pw::engine::gpu

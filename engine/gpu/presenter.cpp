@@ -13,12 +13,27 @@ namespace {
 
 struct SwapchainImage {
   VkImage image = VK_NULL_HANDLE;  // owned by the swapchain
-  gpu::OwnedImageView view;
+  gpu::OwnedImageView view;         // in the swapchain's format: the views' dynamic rendering
+  gpu::OwnedImageView overlayView;  // in the overlay's UNORM format where that differs; else none
   gpu::OwnedFramebuffer framebuffer;   // for the overlay render pass
   gpu::OwnedSemaphore renderFinished;  // per image: present waits on it (one per frame would be reused too early)
 };
 
 bool isSrgb(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_A8B8G8R8_SRGB_PACK32; }
+
+// The UNORM format with the same bytes as an sRGB one; VK_FORMAT_UNDEFINED for others.
+VkFormat unormOf(VkFormat f) {
+  switch (f) {
+    case VK_FORMAT_B8G8R8A8_SRGB:
+      return VK_FORMAT_B8G8R8A8_UNORM;
+    case VK_FORMAT_R8G8B8A8_SRGB:
+      return VK_FORMAT_R8G8B8A8_UNORM;
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+      return VK_FORMAT_A8B8G8R8_UNORM_PACK32;
+    default:
+      return VK_FORMAT_UNDEFINED;
+  }
+}
 
 // Where red and blue lie in a capturable swapchain format's 4 bytes; none for others.
 std::optional<std::pair<int, int>> redBlueBytes(VkFormat f) {
@@ -54,6 +69,7 @@ struct Presenter::Impl {
   VkSurfaceKHR surface = VK_NULL_HANDLE;  // borrowed
   PresenterOptions options;
   VkSurfaceFormatKHR surfaceFormat{};
+  VkFormat overlayFormat = VK_FORMAT_UNDEFINED;  // the overlay pass's: never an sRGB one where avoidable
   VkPresentModeKHR presentMode = VK_PRESENT_MODE_FIFO_KHR;
   gpu::OwnedRenderPass overlayPass;
   gpu::OwnedDescriptorPool framePool;
@@ -91,7 +107,7 @@ struct Presenter::Impl {
 
 Status Presenter::Impl::createOverlayPass() {
   VkAttachmentDescription attachment{};
-  attachment.format = surfaceFormat.format;
+  attachment.format = overlayFormat;
   attachment.samples = VK_SAMPLE_COUNT_1_BIT;
   attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // keep the resolved scene
   attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -156,6 +172,15 @@ Status Presenter::Impl::recreateSwapchain() {
   uint32_t count = std::max(caps.minImageCount + 1, 2u);
   if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+  // sRGB images with a UNORM overlay view: the images may be viewed in both formats.
+  const VkFormat viewFormats[2] = {surfaceFormat.format, overlayFormat};
+  VkImageFormatListCreateInfo formatList{VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO};
+  formatList.viewFormatCount = 2;
+  formatList.pViewFormats = viewFormats;
+  if (overlayFormat != surfaceFormat.format) {
+    info.flags = VK_SWAPCHAIN_CREATE_MUTABLE_FORMAT_BIT_KHR;
+    info.pNext = &formatList;
+  }
   info.surface = surface;
   info.minImageCount = count;
   info.imageFormat = surfaceFormat.format;
@@ -197,10 +222,16 @@ Status Presenter::Impl::recreateSwapchain() {
     VkImageView view = VK_NULL_HANDLE;
     PW_VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
     entry.view = gpu::OwnedImageView(device, view);
+    VkImageView overlayView = view;
+    if (overlayFormat != surfaceFormat.format) {
+      viewInfo.format = overlayFormat;
+      PW_VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &overlayView));
+      entry.overlayView = gpu::OwnedImageView(device, overlayView);
+    }
     VkFramebufferCreateInfo fbInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fbInfo.renderPass = overlayPass.get();
     fbInfo.attachmentCount = 1;
-    fbInfo.pAttachments = &view;
+    fbInfo.pAttachments = &overlayView;
     fbInfo.width = size.width;
     fbInfo.height = size.height;
     fbInfo.layers = 1;
@@ -267,12 +298,20 @@ Result<std::unique_ptr<Presenter>> Presenter::create(Renderer& renderer, VkSurfa
   std::vector<VkSurfaceFormatKHR> formats(formatCount);
   PW_VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(ctx.physicalDevice(), surface, &formatCount, formats.data()));
   if (formats.empty()) return makeError("the window surface offers no pixel formats");
+  // sRGB images with a UNORM view for the overlay where the device can (mutable
+  // format); else UNORM images, the views' shaders encoding sRGB (presenter.h).
+  const bool mutableFormat = ctx.swapchainMutableFormatSupported();
   impl->surfaceFormat = formats[0];
   for (const VkSurfaceFormatKHR& f : formats) {
-    if (isSrgb(f.format) && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) {
+    const bool wanted = mutableFormat ? unormOf(f.format) != VK_FORMAT_UNDEFINED : redBlueBytes(f.format) && !isSrgb(f.format);
+    if (wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) {
       impl->surfaceFormat = f;
       break;
     }
+  }
+  impl->overlayFormat = impl->surfaceFormat.format;
+  if (mutableFormat && unormOf(impl->surfaceFormat.format) != VK_FORMAT_UNDEFINED) {
+    impl->overlayFormat = unormOf(impl->surfaceFormat.format);
   }
   uint32_t modeCount = 0;
   PW_VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(ctx.physicalDevice(), surface, &modeCount, nullptr));

@@ -122,6 +122,45 @@ void magentaSquare(VkCommandBuffer cmd) {
   vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
 }
 
+// ImGui 1.86's colours are sRGB-encoded values its backend writes unchanged; the window
+// must show them as written. Before the overlay pass wrote through a UNORM view of the
+// sRGB swapchain image, the hardware encoded them again: (70, 220, 90) showed as
+// (143, 239, 160) and ImGui's window background 15 as 67.
+TEST_F(ViewsWindowTest, OverlayColoursReachTheWindowUnchanged) {
+  struct Square {
+    int x, y;
+    uint8_t rgb[3];
+  };
+  const Square squares[] = {
+      {40, 40, {70, 220, 90}},    // a handle colour
+      {80, 40, {15, 15, 15}},     // ImGui's default window background (0.06)
+      {120, 40, {128, 64, 200}},  // mid-range values, where the sRGB curve departs most
+  };
+  const OverlayCallback overlay = [&](VkCommandBuffer cmd) {
+    for (const Square& s : squares) {
+      const VkClearAttachment clear{
+          VK_IMAGE_ASPECT_COLOR_BIT, 0, {{{s.rgb[0] / 255.0f, s.rgb[1] / 255.0f, s.rgb[2] / 255.0f, 1.0f}}}};
+      const VkClearRect rect{{{s.x, s.y}, {16, 16}}, 0, 1};
+      vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
+    }
+  };
+  // Over a scene view and over the clear colour (sRGB 0.5 grey: 128), which the views
+  // still encode as before.
+  auto scene = renderer_->addScene(room());
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  const Image shown = drawAndCapture({SceneView{*scene, camera(0), {0, 0, 100, 100}, {}, {}}}, overlay,
+                                     glm::vec3(0.5f));
+  for (const Square& s : squares) {
+    const uint8_t* p = shown.pixel(s.x + 8, s.y + 8);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(p[c], s.rgb[c], 1) << "square at " << s.x << "," << s.y << " channel " << c;
+    }
+  }
+  const uint8_t* clear = shown.pixel(300, 200);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(clear[c], 128, 1) << "clear colour channel " << c;
+  EXPECT_TRUE(renderer_->removeScene(*scene).ok());
+}
+
 TEST_F(ViewsWindowTest, SampleRoomInARectangleAndInATextureEqualsItsOffscreenRender) {
   constexpr int w = 140, h = 105;
   const Image expected = reference(0, w, h);
