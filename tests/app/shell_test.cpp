@@ -171,6 +171,16 @@ TEST_F(ShellTest, WalkKeepsItsPlaceWhileAnotherModeRuns) {
     for (int x = 22; x < 218; ++x) coveredByUi += !isMagenta(window.pixel(x, y));
   }
   EXPECT_EQ(coveredByUi, 196 * 96);
+  // ImGui's colours are sRGB-encoded values, blended and shown as they are: the window
+  // background (0.06, alpha 0.94: bytes 15 and 240) over the magenta clear is
+  // 15 * 240/255 + 255 * 15/255 = 29 in red and blue, 14 in green; measured (29, 14, 29).
+  // (When the overlay wrote to an sRGB attachment, blending in linear light and encoding
+  // once more, this measured (95, 67, 95).)
+  const uint8_t* body = window.pixel(200, 100);
+  std::printf("ImGui window body over magenta: (%d, %d, %d)\n", body[0], body[1], body[2]);
+  EXPECT_NEAR(body[0], 29, 1);
+  EXPECT_NEAR(body[1], 14, 1);
+  EXPECT_NEAR(body[2], 29, 1);
 }
 
 // In the editor, Esc in the walk (the cursor free) goes back to the editor
