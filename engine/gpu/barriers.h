@@ -1,4 +1,4 @@
-// Small helpers for synchronization2 image barriers (one subresource range each).
+// Small helpers for synchronization2 barriers (images: one subresource range each).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -47,6 +47,23 @@ void transitionImages(VkCommandBuffer cmd, const ImageTransition (&transitions)[
 inline void transitionImage(VkCommandBuffer cmd, const ImageTransition& transition) {
   const ImageTransition one[1] = {transition};
   transitionImages(cmd, one);
+}
+
+// Makes what a copy wrote into `buffer` visible to the host (read-backs).
+inline void copyToHostBarrier(VkCommandBuffer cmd, VkBuffer buffer) {
+  VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+  toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  toHost.buffer = buffer;
+  toHost.size = VK_WHOLE_SIZE;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.bufferMemoryBarrierCount = 1;
+  dependency.pBufferMemoryBarriers = &toHost;
+  vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
 }  // namespace pw::engine::gpu

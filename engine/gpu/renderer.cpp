@@ -97,19 +97,7 @@ void recordReadback(VkCommandBuffer cmd, VkImage image, VkExtent2D extent, VkIma
     gpu::transitionImage(cmd, {image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, after, VK_PIPELINE_STAGE_2_COPY_BIT,
                                VK_ACCESS_2_NONE, stages, VK_ACCESS_2_NONE});
   }
-  VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-  toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-  toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-  toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  toHost.buffer = buffer;
-  toHost.size = VK_WHOLE_SIZE;
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.bufferMemoryBarrierCount = 1;
-  dependency.pBufferMemoryBarriers = &toHost;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  gpu::copyToHostBarrier(cmd, buffer);
 }
 
 Image imageFromReadback(const gpu::Buffer& buffer, uint32_t width, uint32_t height) {
