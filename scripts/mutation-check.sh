@@ -23,15 +23,19 @@
 #   --only A,B     only these bugs (names as --list prints them)
 #   --timeout S    per-test timeout for ctest (default 300 s)
 #   --jobs N       build and ctest parallelism (default 2)
+#   --allow-baseline-failures
+#                  go on when tests fail unmutated (others' work in progress in a shared tree):
+#                  they are listed, and a bug counts as caught only by tests that passed
 #   --fast         stop each suite run at its first failure (ctest --stop-on-failure): quicker,
 #                  but names only the first tests that caught a bug
 # Logs: DIR/logs/NAME.build.log and NAME.ctest.log; the table also goes to DIR/report.txt.
 #
-# How long: on the 2-core development machine (shared, under load), the first run
-# builds the whole copy (about 20 min) and runs the unmutated suite (about 3 min); each
-# bug then costs its rebuild (0.5-6 min: a header or a library low in the graph relinks
-# every test) plus a suite run (2-4 min). A full pass of the 13 bugs took MEASURED
-# (see DEVELOPERS.md, "Mutation check").
+# How long (measured 2026-11-29 on the 2-core development machine, shared, load 4-5):
+# a full pass of the 13 bugs took 51 min: building the copy 10-11 min (the first run
+# or after a change low in the graph; a run after small changes rebuilds in seconds),
+# the unmutated suite 3 min (406 tests), then each bug 1.7-4.2 min (its rebuild
+# 11-24 s, the rest the suite). --only with one or two bugs on a built copy: 5-10 min.
+# See also DEVELOPERS.md, "Mutation check".
 set -uo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -42,6 +46,7 @@ timeout=300
 jobs=2
 from_head=0
 stop=()
+allow_baseline=0
 mode=run
 
 die() { echo "mutation-check: error: $*" >&2; exit 2; }
@@ -54,6 +59,7 @@ while [[ $# -gt 0 ]]; do
     --timeout) [[ $# -ge 2 && $2 =~ ^[0-9]+$ ]] || die "--timeout needs seconds"; timeout=$2; shift 2 ;;
     --jobs) [[ $# -ge 2 && $2 =~ ^[0-9]+$ ]] || die "--jobs needs a number"; jobs=$2; shift 2 ;;
     --head) from_head=1; shift ;;
+    --allow-baseline-failures) allow_baseline=1; shift ;;
     --fast) stop=(--stop-on-failure); shift ;;
     --list) mode=list; shift ;;
     --check | --dry-run) mode=check; shift ;;
@@ -61,6 +67,7 @@ while [[ $# -gt 0 ]]; do
     *) die "unknown option $1 (--help)" ;;
   esac
 done
+[[ $allow_baseline == 1 && ${#stop[@]} -gt 0 ]] && die "--fast would stop at a test that fails unmutated; drop one of --fast, --allow-baseline-failures"
 only_args=()
 [[ -n $only ]] && only_args=(--only "$only")
 
@@ -119,14 +126,20 @@ build_s=$((SECONDS - t0))
 echo "running the unmutated suite (built in ${build_s} s)"
 t0=$SECONDS
 run_suite baseline
+baseline_failed=$failed
 if [[ $suite_rc != 0 || -n $failed ]]; then
-  echo "the unmutated suite fails; no bug can be judged until it passes:" >&2
-  [[ -n $failed ]] && sed 's/^/  /' <<<"$failed" >&2
-  die "see $logs/baseline.ctest.log (try --head if others' uncommitted work breaks the tree)"
+  if [[ $allow_baseline == 1 && -n $failed ]]; then
+    echo "note: $(wc -l <<<"$failed") tests fail unmutated and will not count as catching a bug:"
+    sed 's/^/  /' <<<"$failed"
+  else
+    echo "the unmutated suite fails; no bug can be judged until it passes:" >&2
+    [[ -n $failed ]] && sed 's/^/  /' <<<"$failed" >&2
+    die "see $logs/baseline.ctest.log (--head copies the last commit instead of others' work in progress)"
+  fi
 fi
-total=$(grep -oE '[0-9]+ tests failed out of [0-9]+' "$logs/baseline.ctest.log" | grep -oE '[0-9]+$')
+total=$(grep -oE 'tests failed out of [0-9]+' "$logs/baseline.ctest.log" | grep -oE '[0-9]+$')
 skipped=$(sed -nE 's/^[[:space:]]*[0-9]+ - ([^ ]+) \(Skipped\).*/\1/p' "$logs/baseline.ctest.log" | sort -u)
-echo "unmutated: ${total:-?} tests pass in $((SECONDS - t0)) s"
+echo "unmutated: ${total:-?} tests run in $((SECONDS - t0)) s"
 if [[ -n $skipped ]]; then
   echo "note: $(wc -l <<<"$skipped") tests were skipped and can catch nothing: $(tr '\n' ' ' <<<"$skipped")"
 fi
@@ -163,6 +176,9 @@ for name in $names; do
   tb=$((SECONDS - t0))
   run_suite "$name"
   restore
+  if [[ -n $baseline_failed && -n $failed ]]; then
+    failed=$(grep -vxF -f <(printf '%s\n' "$baseline_failed") <<<"$failed")
+  fi
   if [[ -n $failed ]]; then
     n=$(wc -l <<<"$failed")
     by=$(head -n 3 <<<"$failed" | paste -sd, - | sed 's/,/, /g')
@@ -191,6 +207,7 @@ trap - INT TERM
     printf '%-29s %-35s %-12s %3d:%02d  %s\n' "$name" "$file" "$result" $((secs / 60)) $((secs % 60)) "$by"
   done
   echo
+  [[ -n $baseline_failed ]] && echo "failing unmutated, not counted: $(paste -sd' ' <<<"$baseline_failed")"
   echo "total $(((SECONDS - start) / 60)) min $(((SECONDS - start) % 60)) s (unmutated build ${build_s} s)"
 } | tee "$dir/report.txt"
 exit $bad
