@@ -268,7 +268,7 @@ Result<uint32_t> Context::memoryType(uint32_t typeBits, VkMemoryPropertyFlags re
   return makeError("the Vulkan device has no suitable memory type (wanted property flags " + std::to_string(required) + ")");
 }
 
-Status Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
+Result<Context::Submission> Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   poolInfo.queueFamilyIndex = queueFamily_;
@@ -300,7 +300,14 @@ Status Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record
   submit.commandBufferInfoCount = 1;
   submit.pCommandBufferInfos = &cmdInfo;
   PW_VK_CHECK(vkQueueSubmit2(queue_, 1, &submit, fence.get()));
-  PW_VK_CHECK(vkWaitForFences(device(), 1, &fenceHandle, VK_TRUE, UINT64_MAX));
+  return Submission{std::move(pool), std::move(fence)};
+}
+
+Status Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
+  auto submission = submit(record);
+  if (!submission) return submission.error();
+  const VkFence fence = submission->fence.get();
+  PW_VK_CHECK(vkWaitForFences(device(), 1, &fence, VK_TRUE, UINT64_MAX));
   return {};
 }
 

@@ -12,6 +12,7 @@
 #include <vulkan/vulkan.h>
 
 #include "base/result.h"
+#include "engine/gpu/vk_owner.h"
 
 namespace pw::engine::gpu {
 
@@ -63,7 +64,15 @@ class Context {
   Result<uint32_t> memoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                               VkMemoryPropertyFlags preferred = 0) const;
 
-  // Records commands with `record`, submits them and waits for them (uploads at scene load).
+  // Commands recorded into a one-time command buffer of their own and submitted; the
+  // buffer (freed with its pool) must live until the fence has signalled.
+  struct Submission {
+    OwnedCommandPool commandPool;
+    OwnedFence fence;
+  };
+  // Records commands with `record` and submits them without waiting (upload_queue.h).
+  Result<Submission> submit(const std::function<void(VkCommandBuffer)>& record) const;
+  // The same, then waits for them.
   Status submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
 
  private:

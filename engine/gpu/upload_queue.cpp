@@ -14,38 +14,9 @@ UploadQueue::~UploadQueue() {
 }
 
 Status UploadQueue::submit(const std::function<void(VkCommandBuffer)>& record, std::shared_ptr<const void> keepAlive) {
-  const VkDevice device = context_.device();
-  Pending p;
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  poolInfo.queueFamilyIndex = context_.queueFamily();
-  VkCommandPool pool = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-  p.commandPool = OwnedCommandPool(device, pool);
-  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocInfo.commandPool = pool;
-  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocInfo.commandBufferCount = 1;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkAllocateCommandBuffers(device, &allocInfo, &cmd));
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
-  p.fence = OwnedFence(device, fence);
-
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  PW_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-  record(cmd);
-  PW_VK_CHECK(vkEndCommandBuffer(cmd));
-  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-  cmdInfo.commandBuffer = cmd;
-  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submit.commandBufferInfoCount = 1;
-  submit.pCommandBufferInfos = &cmdInfo;
-  PW_VK_CHECK(vkQueueSubmit2(context_.queue(), 1, &submit, fence));
-  p.keepAlive = std::move(keepAlive);
-  pending_.push_back(std::move(p));
+  auto submission = context_.submit(record);
+  if (!submission) return submission.error();
+  pending_.push_back({std::move(submission->commandPool), std::move(submission->fence), std::move(keepAlive)});
   return {};
 }
 
