@@ -1,6 +1,7 @@
 #include "engine/gpu/image_pass.h"
 
 #include "engine/gpu/color_space.h"
+#include "engine/gpu/pipelines.h"
 #include "engine/gpu/vk_check.h"
 #include "shaders/shader_interface.h"
 #include "shaders/spirv.h"
@@ -91,9 +92,6 @@ Result<VkPipeline> ImagePipelines::pipeline(VkFormat format, bool blended) {
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = VK_CULL_MODE_NONE;
@@ -117,26 +115,10 @@ Result<VkPipeline> ImagePipelines::pipeline(VkFormat format, bool blended) {
   VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
   dynamic.dynamicStateCount = 2;
   dynamic.pDynamicStates = dynamics;
-  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &format;
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.pNext = &rendering;
-  info.stageCount = 2;
-  info.pStages = stages;
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blendState;
-  info.pDynamicState = &dynamic;
-  info.layout = layout_.get();
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  return pipelines_.emplace(key, OwnedPipeline(context_.device(), pipeline)).first->second.get();
+  auto pipeline = createGraphicsPipeline(context_.device(), {stages, &vertexInput, &assembly, &raster, &multisample, &depth,
+                                                            &blendState, &dynamic, layout_.get(), format});
+  if (!pipeline) return pipeline.error();
+  return pipelines_.emplace(key, std::move(*pipeline)).first->second.get();
 }
 
 Status recordImageView(VkCommandBuffer cmd, ImagePipelines& pipelines, const ImageDraw& draw) {

@@ -130,10 +130,6 @@ Result<VkPipeline> PipelineLibrary::pipeline(VkFormat format, VkSampleCountFlagB
                       : variant.topology == Topology::kLines   ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
                                                                : VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
 
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.lineWidth = 1.0f;
@@ -172,27 +168,37 @@ Result<VkPipeline> PipelineLibrary::pipeline(VkFormat format, VkSampleCountFlagB
   dynamic.dynamicStateCount = 4;
   dynamic.pDynamicStates = dynamics;
 
+  auto pipeline = createGraphicsPipeline(context_.device(), {stages, &vertexInput, &assembly, &raster, &multisample, &depth,
+                                                            &blendState, &dynamic, layout_.get(), format, kDepthFormat});
+  if (!pipeline) return pipeline.error();
+  return pipelines_.emplace(key, std::move(*pipeline)).first->second.get();
+}
+
+Result<OwnedPipeline> createGraphicsPipeline(VkDevice device, const GraphicsPipelineParts& parts) {
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &format;
-  rendering.depthAttachmentFormat = kDepthFormat;
+  rendering.pColorAttachmentFormats = &parts.colorFormat;
+  rendering.depthAttachmentFormat = parts.depthFormat;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
   info.pNext = &rendering;
   info.stageCount = 2;
-  info.pStages = stages;
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
+  info.pStages = parts.stages;
+  info.pVertexInputState = parts.vertexInput;
+  info.pInputAssemblyState = parts.assembly;
   info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blendState;
-  info.pDynamicState = &dynamic;
-  info.layout = layout_.get();
+  info.pRasterizationState = parts.raster;
+  info.pMultisampleState = parts.multisample;
+  info.pDepthStencilState = parts.depth;
+  info.pColorBlendState = parts.blend;
+  info.pDynamicState = parts.dynamic;
+  info.layout = parts.layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  return pipelines_.emplace(key, OwnedPipeline(context_.device(), pipeline)).first->second.get();
+  PW_VK_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+  return OwnedPipeline(device, pipeline);
 }
 
 }  // namespace pw::engine::gpu

@@ -17,6 +17,24 @@ namespace pw::engine::gpu {
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
+// What differs between photowalk's graphics pipelines (the scene's, the image views');
+// createGraphicsPipeline adds the rest: dynamic rendering into one colour attachment
+// (and a depth attachment when depthFormat is set), one viewport and one scissor.
+struct GraphicsPipelineParts {
+  const VkPipelineShaderStageCreateInfo* stages = nullptr;  // vertex and fragment
+  const VkPipelineVertexInputStateCreateInfo* vertexInput = nullptr;
+  const VkPipelineInputAssemblyStateCreateInfo* assembly = nullptr;
+  const VkPipelineRasterizationStateCreateInfo* raster = nullptr;
+  const VkPipelineMultisampleStateCreateInfo* multisample = nullptr;
+  const VkPipelineDepthStencilStateCreateInfo* depth = nullptr;
+  const VkPipelineColorBlendStateCreateInfo* blend = nullptr;
+  const VkPipelineDynamicStateCreateInfo* dynamic = nullptr;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkFormat colorFormat = VK_FORMAT_UNDEFINED;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+};
+Result<OwnedPipeline> createGraphicsPipeline(VkDevice device, const GraphicsPipelineParts& parts);
+
 class PipelineLibrary {
  public:
   // `anisotropic`: anisotropic filtering where the device has it. `vertexLighting`:
