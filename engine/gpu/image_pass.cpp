@@ -9,15 +9,6 @@
 namespace pw::engine::gpu {
 namespace {
 
-Result<OwnedShaderModule> makeShader(VkDevice device, std::span<const uint32_t> words) {
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = words.size_bytes();
-  info.pCode = words.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
-  return OwnedShaderModule(device, module);
-}
-
 Result<OwnedSampler> makeSampler(VkDevice device, VkFilter filter, VkSamplerMipmapMode mipmap) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = filter;
@@ -45,23 +36,16 @@ Result<std::unique_ptr<ImagePipelines>> ImagePipelines::create(const Context& co
   std::unique_ptr<ImagePipelines> lib(new ImagePipelines(context));
   const VkDescriptorSetLayoutBinding binding{PW_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                              VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = 1;
-  setInfo.pBindings = &binding;
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
-  lib->setLayout_ = OwnedDescriptorSetLayout(device, setLayout);
+  auto setLayout = makeSetLayout(device, {binding});
+  if (!setLayout) return setLayout.error();
+  lib->setLayout_ = std::move(*setLayout);
 
   static_assert(PW_SET_IMAGE == 0, "the layout's only set");
   const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ImagePushConstants)};
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
-  lib->layout_ = OwnedPipelineLayout(device, layout);
+  const VkDescriptorSetLayout sets[] = {lib->setLayout_.get()};
+  auto layout = makePipelineLayout(device, sets, push);
+  if (!layout) return layout.error();
+  lib->layout_ = std::move(*layout);
 
   auto vert = makeShader(device, shaders::imageVertSpirv());
   if (!vert) return vert.error();

@@ -6,7 +6,6 @@
 #include "shaders/spirv.h"
 
 namespace pw::engine::gpu {
-namespace {
 
 Result<OwnedDescriptorSetLayout> makeSetLayout(VkDevice device, std::initializer_list<VkDescriptorSetLayoutBinding> bindings) {
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -25,6 +24,20 @@ Result<OwnedShaderModule> makeShader(VkDevice device, std::span<const uint32_t> 
   PW_VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
   return OwnedShaderModule(device, module);
 }
+
+Result<OwnedPipelineLayout> makePipelineLayout(VkDevice device, std::span<const VkDescriptorSetLayout> sets,
+                                               const VkPushConstantRange& push) {
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = static_cast<uint32_t>(sets.size());
+  info.pSetLayouts = sets.data();
+  info.pushConstantRangeCount = 1;
+  info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  PW_VK_CHECK(vkCreatePipelineLayout(device, &info, nullptr, &layout));
+  return OwnedPipelineLayout(device, layout);
+}
+
+namespace {
 
 bool isSrgbFormat(VkFormat f) {
   return f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
@@ -54,14 +67,9 @@ Result<std::unique_ptr<PipelineLibrary>> PipelineLibrary::create(const Context& 
   static_assert(PW_SET_FRAME == 0 && PW_SET_SCENE == 1 && PW_SET_TEXTURE == 2, "set order below");
   const VkDescriptorSetLayout sets[] = {lib->frameSetLayout(), lib->sceneSetLayout(), lib->textureSetLayout()};
   const VkPushConstantRange push{kGraphicsStages, 0, sizeof(DrawPushConstants)};
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 3;
-  layoutInfo.pSetLayouts = sets;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  PW_VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
-  lib->layout_ = OwnedPipelineLayout(device, layout);
+  auto layout = makePipelineLayout(device, sets, push);
+  if (!layout) return layout.error();
+  lib->layout_ = std::move(*layout);
 
   auto vert = makeShader(device, shaders::sceneVertSpirv());
   if (!vert) return vert.error();

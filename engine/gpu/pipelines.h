@@ -3,7 +3,9 @@
 // kept for the Renderer's life.
 #pragma once
 
+#include <initializer_list>
 #include <map>
+#include <span>
 #include <tuple>
 
 #include <vulkan/vulkan.h>
@@ -34,6 +36,12 @@ struct GraphicsPipelineParts {
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
 };
 Result<OwnedPipeline> createGraphicsPipeline(VkDevice device, const GraphicsPipelineParts& parts);
+
+// The pieces a pipeline library makes its pipelines from.
+Result<OwnedShaderModule> makeShader(VkDevice device, std::span<const uint32_t> words);
+Result<OwnedDescriptorSetLayout> makeSetLayout(VkDevice device, std::initializer_list<VkDescriptorSetLayoutBinding> bindings);
+Result<OwnedPipelineLayout> makePipelineLayout(VkDevice device, std::span<const VkDescriptorSetLayout> sets,
+                                               const VkPushConstantRange& push);
 
 class PipelineLibrary {
  public:
