@@ -62,15 +62,6 @@ double photoNearExtent(const Measurement& m, const metrology::Dimensions& box, i
   return best;
 }
 
-engine::Image toImage(const cv::Mat& bgr) {
-  cv::Mat rgba;
-  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
-  engine::Image image;
-  image.width = rgba.cols;
-  image.height = rgba.rows;
-  image.rgba.assign(rgba.data, rgba.data + rgba.total() * 4);
-  return image;
-}
 
 // Cuts one surface's texture out of the photo with metrology's rectifier, through the
 // measured camera; what the photo does not show is filled with the mean colour of
@@ -97,7 +88,7 @@ Result<SurfaceTexture> cutTexture(metrology::PhotoPyramid& photo, const Measurem
   out.pxPerM = plane->pxPerM;
   out.coveredFraction = plane->coverage;
   meanColor = glm::vec3(plane->meanColor[2], plane->meanColor[1], plane->meanColor[0]) / 255.0f;
-  out.image = toImage(plane->image);
+  out.image = imageFromBgr(plane->image);
   // Texture coordinates (0..1 over the rect, t = 0 at the bottom) to the photo's pixels:
   // metric x = s W, y = (1 - t) H.
   const cv::Matx33d photoFromTexCoord = photoFromMetric * cv::Matx33d(widthM, 0, 0, 0, -heightM, heightM, 0, 0, 1);
@@ -130,6 +121,16 @@ engine::Material litMaterial(const glm::vec3& diffuse) {
 glm::quat toQuat(const glm::dmat3& m) { return glm::normalize(glm::quat(glm::mat3(m))); }
 
 }  // namespace
+
+engine::Image imageFromBgr(const cv::Mat& bgr) {
+  cv::Mat rgba;
+  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);  // a new, continuous matrix
+  engine::Image image;
+  image.width = rgba.cols;
+  image.height = rgba.rows;
+  image.rgba.assign(rgba.data, rgba.data + rgba.total() * 4);
+  return image;
+}
 
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo, const Measurement& measurement,
                                         bool attached, const ModelOptions& options) {

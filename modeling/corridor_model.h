@@ -53,6 +53,9 @@ struct CorridorModel {
   std::array<glm::vec3, 5> meanColor{};
 };
 
+// An 8-bit BGR (OpenCV) image as an engine image: RGBA, opaque, rows top to bottom.
+engine::Image imageFromBgr(const cv::Mat& bgr);
+
 // Cuts the textures out of the photo (BGR, 8 bit) for the measured corridor.
 // `attached`: the corridor starts at another's wall, so nothing runs towards its camera.
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,

@@ -11,6 +11,7 @@
 #include "editor/app/shell.h"
 #include "editor/edit/model_walk.h"
 #include "editor/edit/live_measurement.h"
+#include "modeling/corridor_model.h"
 
 namespace pw::edit {
 namespace fs = std::filesystem;
@@ -25,19 +26,6 @@ constexpr double kGrabRadiusPx = 12;   // a press this near a handle takes it
 constexpr double kSlowFactor = 0.1;    // Shift while dragging
 constexpr double kNudgePx = 1.0;       // arrow keys; Shift: a tenth
 constexpr long kNudgeLoupeSteps = 60;  // the loupe stays a second after a nudge
-
-engine::Image imageFromBgr(const cv::Mat& bgr) {
-  cv::Mat rgba;
-  cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
-  engine::Image image;
-  image.width = rgba.cols;
-  image.height = rgba.rows;
-  image.rgba.resize(static_cast<size_t>(rgba.cols) * rgba.rows * 4);
-  for (int y = 0; y < rgba.rows; ++y) {
-    std::copy_n(rgba.ptr<uint8_t>(y), static_cast<size_t>(rgba.cols) * 4, image.rgba.data() + size_t(y) * rgba.cols * 4);
-  }
-  return image;
-}
 
 ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y}); }
 
@@ -68,7 +56,7 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
     return;
   }
   engine::ImageHandle photo;
-  auto uploaded = shell.renderer().addImage(imageFromBgr(doc->photo()));
+  auto uploaded = shell.renderer().addImage(modeling::imageFromBgr(doc->photo()));
   if (!uploaded) {
     openError_ = path.string() + ": the photo cannot be shown: " + uploaded.message();
     shell.showMessage("error: " + openError_);
