@@ -9,6 +9,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc
   libglfw3-dev libglm-dev libopencv-dev libimgui-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libtinygltf-dev zlib1g-dev
+  libexif-dev
   xvfb xauth fonts-dejavu-core povray
 )
 if [[ "${1:-}" == "--with-extras" || "${CI:-}" == "true" ]]; then
