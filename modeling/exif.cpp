@@ -243,8 +243,8 @@ std::optional<ExifFocal> exifFocal(const ExifTags& tags, int storedWidth, int st
         f.sensorHeightMm = swap ? sensorXMm : sensorYMm;
         f.focalPx = f.focalMm->pixels(int(shownWidth));
         f.source = "EXIF FocalLength " + fixed(focalMm, 2) + " mm with FocalPlaneXResolution " +
-                   fixed(*tags.focalPlaneXResolution, 1) + " px/" + unitName + " (sensor " + fixed(sensorXMm, 2) +
-                   " x " + fixed(sensorYMm, 2) + " mm" + (swap ? ", turned with the photo" : "") + ")";
+                   fixed(*tags.focalPlaneXResolution, 1) + " px/" + unitName + " (sensor " + fixed(widthMm, 2) +
+                   " x " + fixed(*f.sensorHeightMm, 2) + " mm" + (swap ? ", turned with the photo" : "") + ")";
         return f;
       }
     }

@@ -62,7 +62,9 @@ struct ExifFocal {
   // along the shown photo's width (its height when the orientation turns the photo).
   std::optional<metrology::FocalLengthMm> focalMm;
   std::optional<double> sensorHeightMm;  // along the shown photo's height, with focalMm
-  std::string source;  // "EXIF FocalLength 4.20 mm with FocalPlaneXResolution 1000 px/cm (sensor 6.40 x 4.80 mm)"
+  // "EXIF FocalLength 4.20 mm with FocalPlaneXResolution 1000.0 px/cm (sensor 6.40 x 4.80 mm)": the
+  // sensor across by down the shown photo (", turned with the photo" when the orientation turned it).
+  std::string source;
 };
 
 // The focal length in pixels of the shown photo, from the tags of its stored image

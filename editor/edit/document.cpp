@@ -88,15 +88,27 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.photo_ = std::move(loaded->image);
     doc.otherFields_ = std::move(loaded->otherFields);
     doc.saved_ = doc.shot_;
+    // The photo's EXIF, to show beside the shot's own camera (loadShot's photo is
+    // oriented as shown, so the stored size is the shown one turned back).
+    doc.exif_ = modeling::readExif(doc.shot_.imagePath);
+    const bool swap = modeling::orientationSwapsAxes(doc.exif_.orientation);
+    doc.exifFocal_ = modeling::exifFocal(doc.exif_, swap ? doc.photo_.rows : doc.photo_.cols,
+                                         swap ? doc.photo_.cols : doc.photo_.rows);
+    doc.fromFile_ = true;
+    doc.openedFocalPx_ = doc.shot_.focalPx;
+    doc.openedFocalMm_ = doc.shot_.focalMm;
+    const auto source = doc.otherFields_.find("focal_source");
+    doc.openedFocalSource_ =
+        source != doc.otherFields_.end() && source->is_string() ? source->get<std::string>() : "the shot file";
     return doc;
   }
 
-  try {
-    doc.photo_ = cv::imread(path.string(), cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-    doc.photo_.release();
-  }
-  if (doc.photo_.empty()) return makeError(path.string() + ": not a readable PNG/JPEG image (or a shot file, *.json)");
+  auto photo = modeling::readPhoto(path);
+  if (!photo) return makeError(path.string() + ": not a readable PNG/JPEG image (or a shot file, *.json)");
+  doc.photo_ = std::move(photo->bgr);
+  doc.exif_ = std::move(photo->exif);
+  doc.exifFocal_ = std::move(photo->focal);
+  for (const std::string& note : photo->notes) doc.notes_.push_back(note);
   doc.path_ = options.photoShotPath.empty() ? path.parent_path() / (path.stem().string() + ".shot.json")
                                             : options.photoShotPath;
   Shot& shot = doc.shot_;
@@ -105,9 +117,22 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   shot.imageHeight = doc.photo_.rows;
   shot.cameraHeightM = kDefaultCameraHeightM;
 
-  auto detection = metrology::detect::detectCorridor(doc.photo_, {});
+  metrology::detect::DetectOptions detectOptions;
+  if (doc.exifFocal_) {
+    shot.focalPx = doc.exifFocal_->focalPx;
+    shot.focalMm = doc.exifFocal_->focalMm;  // saved as focal_mm with sensor_width_mm when the sensor is known
+    detectOptions.focalPx = shot.focalPx;
+    doc.openedFocalSource_ = doc.exifFocal_->source;
+    doc.notes_.push_back("focal length " + fixed(shot.focalPx, 1) + " px from the photo's " + doc.exifFocal_->source);
+  }
+  auto detection = metrology::detect::detectCorridor(doc.photo_, detectOptions);
   if (detection && detection->found) {
     shot.focalPx = detection->focalPx;
+    if (!doc.exifFocal_) {
+      doc.openedFocalSource_ = detection->focalSource == metrology::detect::FocalSource::kVanishingPoints
+                                   ? "detection: from the vanishing points"
+                                   : "default: a 28 mm-equivalent lens";
+    }
     double lowest = 1, highest = 0;
     for (int k = 0; k < kCornerCount; ++k) {
       shot.cornersPx[k] = detection->corners[k].px;
@@ -122,13 +147,18 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   } else {
     const std::string reason = detection ? detection->notFoundReason : detection.message();
     const int longSide = std::max(shot.imageWidth, shot.imageHeight);
-    shot.focalPx = metrology::detect::kDefaultFocalOverLongSide * longSide;
     shot.cornersPx = defaultCorners(shot.imageWidth, shot.imageHeight);
     doc.notes_.push_back("no corridor found (" + reason + "): a default box from the image size; drag the corners onto "
                          "the corridor's");
-    doc.notes_.push_back("focal length assumed " + fixed(shot.focalPx, 0) +
-                         " px (a 28 mm-equivalent lens): set it in the Camera panel");
+    if (!doc.exifFocal_) {
+      shot.focalPx = metrology::detect::kDefaultFocalOverLongSide * longSide;
+      doc.openedFocalSource_ = "default: a 28 mm-equivalent lens";
+      doc.notes_.push_back("focal length assumed " + fixed(shot.focalPx, 0) +
+                           " px (a 28 mm-equivalent lens): set it in the Camera panel");
+    }
   }
+  doc.openedFocalPx_ = shot.focalPx;
+  doc.openedFocalMm_ = shot.focalMm;
   doc.notes_.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it in the Camera panel");
   return doc;
 }
@@ -164,12 +194,38 @@ bool Document::redo() {
   return true;
 }
 
+namespace {
+
+bool sameFocal(double px, const std::optional<metrology::FocalLengthMm>& mm, double otherPx,
+               const std::optional<metrology::FocalLengthMm>& otherMm) {
+  if (mm.has_value() != otherMm.has_value()) return false;
+  if (mm) return mm->focalMm == otherMm->focalMm && mm->sensorWidthMm == otherMm->sensorWidthMm;
+  return px == otherPx;
+}
+
+}  // namespace
+
+std::string Document::focalSource() const {
+  if (exifFocal_ && sameFocal(shot_.focalPx, shot_.focalMm, exifFocal_->focalPx, exifFocal_->focalMm)) {
+    return exifFocal_->source;
+  }
+  if (sameFocal(shot_.focalPx, shot_.focalMm, openedFocalPx_, openedFocalMm_)) return openedFocalSource_;
+  return "set in the editor";
+}
+
+nlohmann::json Document::fieldsToWrite() const {
+  nlohmann::json fields = otherFields_;
+  const bool asInTheFile = fromFile_ && sameFocal(shot_.focalPx, shot_.focalMm, openedFocalPx_, openedFocalMm_);
+  if (!asInTheFile) fields["focal_source"] = focalSource();
+  return fields;
+}
+
 Status Document::save() {
-  PW_TRY(modeling::writeShotFile(path_, shot_, otherFields_));
+  PW_TRY(modeling::writeShotFile(path_, shot_, fieldsToWrite()));
   saved_ = shot_;
   return {};
 }
 
-Status Document::saveCopy(const fs::path& path) const { return modeling::writeShotFile(path, shot_, otherFields_); }
+Status Document::saveCopy(const fs::path& path) const { return modeling::writeShotFile(path, shot_, fieldsToWrite()); }
 
 }  // namespace pw::edit

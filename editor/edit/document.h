@@ -19,6 +19,7 @@
 
 #include "base/result.h"
 #include "metrology/shot.h"
+#include "modeling/exif.h"
 
 namespace pw::edit {
 
@@ -79,6 +80,15 @@ class Document {
   // Per corner, the detection's confidence (0..1), while the corner is where detection
   // put it; unset for corners from a file, a default box, or moved since.
   std::optional<double> detectionConfidence(int corner) const;
+  // The photo's EXIF tags (read for a shot file's photo too; present = false without
+  // any) and the focal length they give for the photo as shown, if any.
+  const modeling::ExifTags& exif() const { return exif_; }
+  const std::optional<modeling::ExifFocal>& exifFocal() const { return exifFocal_; }
+  // Where the shot's focal length comes from, in words: the EXIF source line while the
+  // focal length is the EXIF's, "detection: vanishing points", "default: ...", the shot
+  // file's own focal_source (or "the shot file") while unchanged, else "set in the
+  // editor". Save writes it as the shot file's "focal_source" (unless it is the file's).
+  std::string focalSource() const;
 
   // Makes `after` the shot, as one undo step from the current one; nothing when equal.
   void apply(const metrology::Shot& after, std::string label);
@@ -106,6 +116,15 @@ class Document {
   std::vector<std::string> notes_;
   std::array<std::optional<double>, metrology::kCornerCount> confidence_{};
   std::array<glm::dvec2, metrology::kCornerCount> detectedPx_{};
+  modeling::ExifTags exif_;
+  std::optional<modeling::ExifFocal> exifFocal_;
+  // The focal length when opened and where it came from (focalSource()); fromFile_:
+  // the shot file said it (its own focal_source, if any, stays in otherFields_).
+  double openedFocalPx_ = 0;
+  std::optional<metrology::FocalLengthMm> openedFocalMm_;
+  std::string openedFocalSource_;
+  bool fromFile_ = false;
+  nlohmann::json fieldsToWrite() const;
   History history_;
 };
 

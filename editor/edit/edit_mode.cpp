@@ -40,6 +40,11 @@ std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
              fs::path path(file);
              if (path.is_relative()) path = scriptDir / path;
              return std::any(SaveCopyEvent{path});
+           }},
+          {"type", [](std::istream& words) -> Result<std::any> {
+             std::string text;
+             if (!(words >> text)) return makeError("expected 'type TEXT'");
+             return std::any(TypeTextEvent{text});
            }}};
 }
 
@@ -158,13 +163,14 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
       break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);  // the corner goes back to where the drag began
+      pickingReference_ = false;
       break;
     default:
       break;
   }
 }
 
-void EditMode::onButton(app::Shell&, const app::MouseButtonEvent& e) {
+void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
   if (!e.down) {
     if (drag_ && e.button == GLFW_MOUSE_BUTTON_LEFT) endDrag(true);
     if (panFrom_ && e.button == panButton_) panFrom_.reset();
@@ -179,8 +185,10 @@ void EditMode::onButton(app::Shell&, const app::MouseButtonEvent& e) {
   }
   if (e.button != GLFW_MOUSE_BUTTON_LEFT) return;
   const int corner = handleAt(canvas_, doc_->shot(), cursorPx_, kGrabRadiusPx);
+  if (pickingReference_ && pickReference(shell, corner)) return;
   select(corner);
   if (corner >= 0) drag_ = Drag{corner, doc_->shot(), cursorPx_};
+  else if (principalHandleAt(cursorPx_) >= 0) drag_ = Drag{kPrincipalPointHandle, doc_->shot(), cursorPx_};
 }
 
 void EditMode::onCursor(const glm::dvec2& p) {
@@ -191,12 +199,15 @@ void EditMode::onCursor(const glm::dvec2& p) {
   }
   if (drag_ && doc_) {
     Shot shot = doc_->shot();
-    glm::dvec2& corner = shot.cornersPx[drag_->corner];
+    const bool principal = drag_->corner == kPrincipalPointHandle;
+    glm::dvec2 principalPx = shot.principalPoint();
+    glm::dvec2& corner = principal ? principalPx : shot.cornersPx[drag_->corner];
     corner += (p - drag_->lastCursorPx) / canvas_.scale() * (shiftHeld() ? kSlowFactor : 1.0);
     // Corners may lie beyond the photo's edges, but not so far that the shot file would
     // be refused (modeling::loadShot: within one image size).
     const glm::dvec2 size(shot.imageWidth, shot.imageHeight);
     corner = glm::clamp(corner, -size, 2.0 * size);
+    if (principal) shot.principalPointPx = principalPx;
     drag_->lastCursorPx = p;
     doc_->setLive(shot);
   }
@@ -220,7 +231,9 @@ void EditMode::select(int corner) { selected_ = (corner >= 0 && corner < kCorner
 void EditMode::endDrag(bool keep) {
   if (!drag_ || !doc_) return;
   if (keep) {
-    doc_->commitLive(drag_->before, std::string("move ") + metrology::cornerName(drag_->corner));
+    doc_->commitLive(drag_->before, drag_->corner == kPrincipalPointHandle
+                                        ? std::string("move the principal point")
+                                        : std::string("move ") + metrology::cornerName(drag_->corner));
   } else {
     doc_->setLive(drag_->before);
   }
@@ -280,6 +293,10 @@ void EditMode::walk(app::Shell& shell) {
 }
 
 Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
+  if (const auto* typed = std::any_cast<TypeTextEvent>(&event.value)) {
+    if (ImGui::GetCurrentContext()) ImGui::GetIO().AddInputCharactersUTF8(typed->text.c_str());
+    return {};
+  }
   const auto* copy = std::any_cast<SaveCopyEvent>(&event.value);
   if (!copy) return AppMode::onReplayEvent(shell, event);
   if (!doc_) return makeError("save-copy: no file is open");
@@ -306,7 +323,7 @@ void EditMode::update(app::Shell& shell, double) {
 std::optional<Loupe> EditMode::loupe() const {
   if (!doc_) return std::nullopt;
   const Shot& shot = doc_->shot();
-  if (drag_) return placeLoupe(canvas_, shot.cornersPx[drag_->corner], drag_->corner, cursorPx_);
+  if (drag_ && drag_->corner < kCornerCount) return placeLoupe(canvas_, shot.cornersPx[drag_->corner], drag_->corner, cursorPx_);
   if (selected_ >= 0 && step_ <= nudgeLoupeUntil_) {
     return placeLoupe(canvas_, shot.cornersPx[selected_], selected_, canvas_.toWindow(shot.cornersPx[selected_]));
   }
@@ -348,6 +365,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
   } else {
     row.add("loupe", ordered_json(nullptr));
   }
+  addCameraTrace(row);
 }
 
 app::FrameContent EditMode::frame(app::Shell&) {

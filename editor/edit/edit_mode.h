@@ -35,6 +35,12 @@ struct SaveCopyEvent {
   std::filesystem::path path;
 };
 
+// `type TEXT`: the replay event that types TEXT (no spaces) into the panel's field that
+// has the keyboard, as keys typed would (camera_panel.cpp).
+struct TypeTextEvent {
+  std::string text;
+};
+
 class EditMode : public app::AppMode {
  public:
   // `walk` is the shell's walk mode for this editor (borrowed).
@@ -59,7 +65,7 @@ class EditMode : public app::AppMode {
 
  private:
   struct Drag {
-    int corner = -1;
+    int corner = -1;  // P1..P8, or kPrincipalPointHandle (handle_warnings.h)
     metrology::Shot before;  // the shot when the drag began: one undo step on release
     glm::dvec2 lastCursorPx{0.0};
   };
@@ -92,7 +98,14 @@ class EditMode : public app::AppMode {
   // panels.cpp: the side panel (document, measurement, warnings, camera, corners, keys).
   void drawPanel(app::Shell& shell);
   void drawMeasurement();
+  // camera_panel.cpp: the camera (EXIF, focal length and sensor, principal point and
+  // its handle, the scale from the camera height or a reference length).
   void drawCamera(app::Shell& shell);
+  void drawCameraOverlay(ImDrawList* list) const;  // the principal point's handle, the reference, the warnings
+  int principalHandleAt(const glm::dvec2& windowPx) const;  // kPrincipalPointHandle or -1
+  bool pickReference(app::Shell& shell, int corner);  // a click while picking the reference's corners
+  void addCameraTrace(app::TraceRow& row) const;      // the trace's "camera" and "handle_warnings"
+  void rememberWidget(const char* name);              // the last item's rectangle, for the trace
   void drawCorners();
   // A number field whose edit becomes one undo step when it loses focus; true then,
   // with the value typed in `*edited`.
@@ -125,6 +138,13 @@ class EditMode : public app::AppMode {
   std::optional<std::filesystem::path> discardOnDrop_;  // a second drop of it discards unsaved changes
   bool showKeys_ = false;
   bool showOverlay_ = true;  // H hides the handles and guides, to see the photo under them
+  // Picking the reference length's two corners on the canvas: the first one picked, or
+  // -1 while waiting for it (camera_panel.cpp).
+  bool pickingReference_ = false;
+  int referencePickFrom_ = -1;
+  // The Camera panel's widgets as last drawn (window pixels), by name: the trace's
+  // "camera"."widgets", so that replay scripts can click them.
+  std::vector<std::pair<std::string, WindowRect>> widgetRects_;
 
   // The panel's field being typed into, and its text's value so far.
   unsigned activeField_ = 0;

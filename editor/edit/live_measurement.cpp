@@ -1,6 +1,7 @@
 #include "editor/edit/live_measurement.h"
 
 #include <exception>
+#include <string>
 
 #include "editor/edit/warnings.h"
 
@@ -13,9 +14,27 @@ LiveMeasurement measureLive(const metrology::Shot& shot) {
     auto measured = metrology::measureCorridor(shot);
     if (measured) {
       live.measurement = std::move(*measured);
-      live.warnings = measurementWarnings(shot, *live.measurement);
+      int culprit = -1;
+      live.warnings = measurementWarnings(shot, *live.measurement, {}, &culprit);
+      live.handleWarnings = handleWarnings(shot, &*live.measurement);
+      if (culprit >= 0) {  // the corner that breaks the box: said on its handle
+        const std::string prefix = "the corners do not make one box";
+        for (auto it = live.warnings.begin(); it != live.warnings.end(); ++it) {
+          if (it->rfind(prefix, 0) != 0) continue;
+          live.handleWarnings.push_back({{culprit}, "off the box", *it, false, "", {}});
+          live.warnings.erase(it);
+          break;
+        }
+      }
     } else {
       live.error = measured.message();
+      live.handleWarnings = handleWarnings(shot, nullptr);
+    }
+    // A dimension's uncertainty said on the handle to move is not said again in general.
+    for (const HandleWarning& w : live.handleWarnings) {
+      if (w.dimension.empty()) continue;
+      const std::string general = "the " + w.dimension + " is uncertain";
+      std::erase_if(live.warnings, [&](const std::string& line) { return line.rfind(general, 0) == 0; });
     }
   } catch (const std::exception& e) {  // nothing a person does may end the editor
     live.measurement.reset();

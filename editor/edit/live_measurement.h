@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "editor/edit/handle_warnings.h"
 #include "metrology/measure.h"
 #include "metrology/shot.h"
 #include "metrology/vanishing.h"
@@ -18,6 +19,7 @@ struct LiveMeasurement {
   std::string error;  // why there is no measurement (one line), when there is none
   std::optional<metrology::CorridorVanishing> vanishing;
   std::vector<std::string> warnings;  // warnings.h
+  std::vector<HandleWarning> handleWarnings;  // handle_warnings.h: on the handles and in words
 };
 
 // Never throws, whatever the corners: a failure is `error`.

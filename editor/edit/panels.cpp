@@ -137,6 +137,9 @@ void EditMode::drawPanel(app::Shell& shell) {
 
 void EditMode::drawMeasurement() {
   if (!ImGui::CollapsingHeader("Measurement", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (const HandleWarning& w : live_.handleWarnings) {  // handle_warnings.h: also on the handles
+    wrapped(w.blocking ? kErrorColour : kWarningColour, w.label + ": " + w.text);
+  }
   if (!live_.measurement) {
     wrapped(kErrorColour, "cannot measure: " + live_.error);
     return;
@@ -178,67 +181,6 @@ bool EditMode::numberField(const char* label, double value, double* edited, cons
   return false;
 }
 
-void EditMode::drawCamera(app::Shell& shell) {
-  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const Shot shot = doc_->shot();
-  Shot after = shot;
-  std::string label;
-  const auto positive = [&](double v, const char* what) {
-    if (std::isfinite(v) && v > 0) return true;
-    shell.showMessage(std::string("warning: ") + what + " must be a positive number; kept as it was");
-    return false;
-  };
-  bool inMm = shot.focalMm.has_value();
-  if (ImGui::Checkbox("focal length in mm", &inMm)) {
-    if (inMm) {
-      after.focalMm = metrology::FocalLengthMm{shot.focalPx / shot.imageWidth * 36.0, 36.0};  // a full-frame sensor
-      after.focalPx = after.focalMm->pixels(shot.imageWidth);
-    } else {
-      after.focalMm.reset();
-    }
-    label = "focal length unit";
-  }
-  double v = 0;
-  if (shot.focalMm) {
-    if (numberField("focal mm", shot.focalMm->focalMm, &v, "%.2f") && positive(v, "the focal length")) {
-      after.focalMm->focalMm = v;
-      label = "focal length";
-    }
-    if (numberField("sensor width mm", shot.focalMm->sensorWidthMm, &v, "%.2f") && positive(v, "the sensor width")) {
-      after.focalMm->sensorWidthMm = v;
-      label = "sensor width";
-    }
-    if (after.focalMm) after.focalPx = after.focalMm->pixels(shot.imageWidth);
-    ImGui::TextDisabled("= %.1f px", shot.focalPx);
-  } else if (numberField("focal px", shot.focalPx, &v, "%.1f") && positive(v, "the focal length")) {
-    after.focalPx = v;
-    label = "focal length";
-  }
-  const glm::dvec2 pp = shot.principalPoint();
-  if (numberField("principal u px", pp.x, &v, "%.1f") && std::isfinite(v)) {
-    after.principalPointPx = glm::dvec2(v, pp.y);
-    label = "principal point";
-  }
-  if (numberField("principal v px", pp.y, &v, "%.1f") && std::isfinite(v)) {
-    after.principalPointPx = glm::dvec2(pp.x, v);
-    label = "principal point";
-  }
-  if (shot.principalPointPx) {
-    if (ImGui::SmallButton("principal point to the centre")) {
-      after.principalPointPx.reset();
-      label = "principal point";
-    }
-  } else {
-    ImGui::TextDisabled("(the photo's centre; a cropped photo moves it)");
-  }
-  if (numberField("camera height m", shot.cameraHeightM.value_or(0.0), &v, "%.3f") &&
-      positive(v, "the camera height")) {
-    after.cameraHeightM = v;
-    label = "camera height";
-  }
-  if (!label.empty()) applyEdit(shell, after, label);
-}
-
 void EditMode::drawCorners() {
   if (!ImGui::CollapsingHeader("Corners", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Shot& shot = doc_->shot();
@@ -275,6 +217,7 @@ void EditMode::drawCanvasOverlay() {
     for (const WindowRect& piece : pieces) {
       list->PushClipRect({float(piece.min.x), float(piece.min.y)}, {float(piece.max.x), float(piece.max.y)}, false);
       drawOverlay(list, input);
+      drawCameraOverlay(list);
       list->PopClipRect();
     }
   }

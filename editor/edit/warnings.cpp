@@ -7,8 +7,9 @@
 namespace pw::edit {
 
 std::vector<std::string> measurementWarnings(const metrology::Shot& shot, const metrology::Measurement& m,
-                                             const metrology::MeasureOptions& options) {
+                                             const metrology::MeasureOptions& options, int* culpritCorner) {
   std::vector<std::string> out;
+  if (culpritCorner) *culpritCorner = -1;
   char line[256];
   const struct {
     const char* name;
@@ -50,6 +51,7 @@ std::vector<std::string> measurementWarnings(const metrology::Shot& shot, const 
                     "the corners do not make one box (%.1f px from it at worst): check %s first, %.1f px off",
                     worstPx, metrology::cornerName(culprit), glm::length(m.reprojectedPx[culprit] - shot.cornersPx[culprit]));
       out.push_back(line);
+      if (culpritCorner) *culpritCorner = culprit;
     }
   }
 

@@ -21,8 +21,8 @@ inline constexpr double kReferencePercent = 5.0;
 
 // One line each; empty when all is well. `measurement` is `shot` measured with
 // `options`; a box that misses the corners is refitted (up to eight times) to find the
-// corner to check.
+// corner to check (`*culpritCorner`, when given: that corner, -1 when none is named).
 std::vector<std::string> measurementWarnings(const metrology::Shot& shot, const metrology::Measurement& measurement,
-                                             const metrology::MeasureOptions& options = {});
+                                             const metrology::MeasureOptions& options = {}, int* culpritCorner = nullptr);
 
 }  // namespace pw::edit

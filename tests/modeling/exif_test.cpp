@@ -210,6 +210,8 @@ TEST(Exif, Orientation6RotatesThePhotoAndSwapsTheSensorAxes) {
   EXPECT_NEAR(*photo->focal->sensorHeightMm, 6.4, 1e-12);
   EXPECT_NEAR(photo->focal->focalPx, 420.0, 1e-9);
   EXPECT_NEAR(photo->focal->focalMm->pixels(photo->bgr.cols), 420.0, 1e-9);
+  EXPECT_NE(photo->focal->source.find("(sensor 4.80 x 6.40 mm, turned with the photo)"), std::string::npos)
+      << photo->focal->source;
 }
 
 TEST(Exif, EveryOrientationAgreesWithOpenCv) {

@@ -1,0 +1,395 @@
+// The editor's camera: the Camera panel (the photo's EXIF, the focal length in pixels
+// or in mm with a sensor width and its presets, the principal point, the scale from
+// the camera height or a reference length between two corners), the principal point's
+// handle and the reference drawn on the canvas, the warnings on the handles, and the
+// trace's "camera" field. Every edit is one undo step (a field: when it loses focus).
+#include <imgui.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "editor/app/shell.h"
+#include "editor/edit/edit_mode.h"
+#include "editor/edit/handle_warnings.h"
+
+namespace pw::edit {
+namespace {
+
+using metrology::kCornerCount;
+using metrology::Shot;
+using nlohmann::ordered_json;
+
+const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
+const ImVec4 kWarningColour(1.0f, 0.80f, 0.30f, 1.0f);
+const ImU32 kPrincipalColour = IM_COL32(240, 90, 255, 255);
+const ImU32 kReferenceColour = IM_COL32(120, 255, 230, 255);
+constexpr double kGrabRadiusPx = 12;
+
+// Common sensors, long side by short side in mm (the active area; makers' figures
+// vary by a few tenths).
+struct SensorPreset {
+  const char* name;
+  double longMm, shortMm;
+};
+constexpr std::array<SensorPreset, 10> kSensors{{
+    {"full frame 36 x 24", 36.0, 24.0},
+    {"APS-C 23.5 x 15.6 (Nikon, Sony, Fujifilm)", 23.5, 15.6},
+    {"APS-C 22.3 x 14.9 (Canon)", 22.3, 14.9},
+    {"Four Thirds 17.3 x 13.0", 17.3, 13.0},
+    {"1-inch 13.2 x 8.8", 13.2, 8.8},
+    {"phone 1/1.3\" 9.8 x 7.4", 9.8, 7.4},
+    {"phone 1/1.7\" 7.6 x 5.7", 7.6, 5.7},
+    {"phone 1/2.3\" 6.17 x 4.55", 6.17, 4.55},
+    {"phone 1/2.55\" 5.6 x 4.2", 5.6, 4.2},
+    {"phone 1/3\" 4.8 x 3.6", 4.8, 3.6},
+}};
+
+void wrapped(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y}); }
+ordered_json optional(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }
+
+// The sensor's side across the photo: the long one for a landscape photo.
+double acrossMm(const SensorPreset& s, const Shot& shot) {
+  return shot.imageHeight > shot.imageWidth ? s.shortMm : s.longMm;
+}
+
+bool cornerCombo(const char* label, int* corner) {
+  bool changed = false;
+  ImGui::SetNextItemWidth(60.0f);
+  if (ImGui::BeginCombo(label, metrology::cornerName(*corner))) {
+    for (int k = 0; k < kCornerCount; ++k) {
+      if (ImGui::Selectable(metrology::cornerName(k), k == *corner)) *corner = k, changed = true;
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+}  // namespace
+
+void EditMode::rememberWidget(const char* name) {
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  widgetRects_.emplace_back(name, WindowRect{{min.x, min.y}, {max.x, max.y}});
+}
+
+void EditMode::drawCamera(app::Shell& shell) {
+  widgetRects_.clear();
+  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const Shot shot = doc_->shot();
+  Shot after = shot;
+  std::string label;
+  const auto positive = [&](double v, const char* what) {
+    if (std::isfinite(v) && v > 0) return true;
+    shell.showMessage(std::string("warning: ") + what + " must be a positive number; kept as it was");
+    return false;
+  };
+
+  // The photo's EXIF, as read (the orientation is applied to the photo shown).
+  const modeling::ExifTags& exif = doc_->exif();
+  const std::optional<modeling::ExifFocal>& exifFocal = doc_->exifFocal();
+  if (exif.present) {
+    const std::string camera = exif.make + (exif.make.empty() || exif.model.empty() ? "" : " ") + exif.model;
+    ImGui::Text("EXIF: %s", camera.empty() ? "(no make or model)" : camera.c_str());
+    if (exif.focalLengthMm) ImGui::Text("  FocalLength %.2f mm", *exif.focalLengthMm);
+    if (exif.focalLength35mm) ImGui::Text("  FocalLengthIn35mmFilm %.0f mm", *exif.focalLength35mm);
+    if (exifFocal && exifFocal->focalMm) {
+      ImGui::Text("  sensor %.2f x %.2f mm (FocalPlaneXResolution)", exifFocal->focalMm->sensorWidthMm,
+                  exifFocal->sensorHeightMm.value_or(0.0));
+    }
+    if (exif.orientation != 1) {
+      wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "  Orientation " + std::to_string(exif.orientation) + ": " +
+                                                           modeling::orientationName(exif.orientation) +
+                                                           " (applied to the photo)");
+    }
+    if (exifFocal) {
+      const bool inUse = doc_->focalSource() == exifFocal->source;
+      ImGui::BeginDisabled(inUse);
+      if (ImGui::SmallButton(inUse ? "EXIF focal length in use" : "use the EXIF focal length")) {
+        after.focalPx = exifFocal->focalPx;
+        after.focalMm = exifFocal->focalMm;
+        label = "focal length from EXIF";
+      }
+      rememberWidget("use EXIF");
+      ImGui::EndDisabled();
+    } else if (exif.focalLengthMm && !shot.focalMm) {
+      if (ImGui::SmallButton("use the EXIF FocalLength with a sensor")) {
+        const double sensor = acrossMm(kSensors[0], shot);
+        after.focalMm = metrology::FocalLengthMm{*exif.focalLengthMm, sensor};
+        after.focalPx = after.focalMm->pixels(shot.imageWidth);
+        label = "focal length from EXIF";
+      }
+    }
+  } else {
+    ImGui::TextDisabled("no EXIF in the photo");
+  }
+  wrapped(kNoteColour, "focal length from: " + doc_->focalSource());
+
+  // The focal length: in pixels, or in mm with the sensor's width across the photo.
+  int unit = shot.focalMm ? 1 : 0;
+  const int unitWas = unit;
+  ImGui::RadioButton("px", &unit, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("mm with a sensor width", &unit, 1);
+  if (unit != unitWas) {
+    if (unit == 1) {
+      // Keeps the focal length in pixels: the EXIF's sensor when known, else full frame.
+      const double sensor = exifFocal && exifFocal->focalMm ? exifFocal->focalMm->sensorWidthMm : acrossMm(kSensors[0], shot);
+      after.focalMm = metrology::FocalLengthMm{shot.focalPx / shot.imageWidth * sensor, sensor};
+      after.focalPx = after.focalMm->pixels(shot.imageWidth);
+    } else {
+      after.focalMm.reset();
+    }
+    label = "focal length unit";
+  }
+  double v = 0;
+  if (shot.focalMm) {
+    if (numberField("focal mm", shot.focalMm->focalMm, &v, "%.2f") && positive(v, "the focal length")) {
+      after.focalMm->focalMm = v;
+      label = "focal length";
+    }
+    rememberWidget("focal mm");
+    if (numberField("sensor width mm", shot.focalMm->sensorWidthMm, &v, "%.2f") && positive(v, "the sensor width")) {
+      after.focalMm->sensorWidthMm = v;
+      label = "sensor width";
+    }
+    ImGui::SetNextItemWidth(220.0f);
+    if (ImGui::BeginCombo("##sensor", "sensor presets")) {
+      for (const SensorPreset& s : kSensors) {
+        if (ImGui::Selectable(s.name, std::abs(acrossMm(s, shot) - shot.focalMm->sensorWidthMm) < 1e-9)) {
+          after.focalMm->sensorWidthMm = acrossMm(s, shot);  // the lens stays: the focal length in mm is kept
+          label = std::string("sensor ") + s.name;
+        }
+      }
+      ImGui::EndCombo();
+    }
+    if (after.focalMm) after.focalPx = after.focalMm->pixels(shot.imageWidth);
+    ImGui::TextDisabled("= %.1f px (the sensor's side across the photo)", shot.focalPx);
+  } else {
+    if (numberField("focal px", shot.focalPx, &v, "%.1f") && positive(v, "the focal length")) {
+      after.focalPx = v;
+      label = "focal length";
+    }
+    rememberWidget("focal px");
+  }
+  if (shot.imageWidth > 0 && shot.imageHeight > 0) {
+    ImGui::TextDisabled("35 mm equivalent %.1f mm (by the diagonal)",
+                        shot.focalPx / std::hypot(double(shot.imageWidth), double(shot.imageHeight)) *
+                            std::hypot(36.0, 24.0));
+  }
+
+  // The principal point: the centre unless moved (its handle on the canvas, or here).
+  const glm::dvec2 pp = shot.principalPoint();
+  if (numberField("principal u px", pp.x, &v, "%.1f") && std::isfinite(v)) {
+    after.principalPointPx = glm::dvec2(v, pp.y);
+    label = "principal point";
+  }
+  if (numberField("principal v px", pp.y, &v, "%.1f") && std::isfinite(v)) {
+    after.principalPointPx = glm::dvec2(pp.x, v);
+    label = "principal point";
+  }
+  ImGui::BeginDisabled(!shot.principalPointPx);
+  if (ImGui::SmallButton("reset to centre")) {
+    after.principalPointPx.reset();
+    label = "principal point to the centre";
+  }
+  rememberWidget("reset to centre");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled(shot.principalPointPx ? "(moved)" : "(the photo's centre)");
+  wrapped(shot.principalPointPx ? kWarningColour : kNoteColour,
+          "drag the magenta PP handle to move it; a cropped or shifted photo moves the principal point "
+          "away from its centre, so move it only for such a photo");
+
+  // The scale: the camera height, a reference length between two corners, or both
+  // (the height scales, the reference is checked).
+  bool byHeight = shot.cameraHeightM.has_value();
+  if (ImGui::Checkbox("camera height", &byHeight)) {
+    if (byHeight) {
+      const double measured = live_.measurement ? live_.measurement->cameraHeightM : kDefaultCameraHeightM;
+      after.cameraHeightM = std::isfinite(measured) && measured > 0 ? measured : kDefaultCameraHeightM;
+      label = "camera height";
+    } else if (shot.reference) {
+      after.cameraHeightM.reset();
+      label = "scale from the reference";
+    } else {
+      shell.showMessage("the scale needs the camera height or a reference length: set a reference first");
+    }
+  }
+  rememberWidget("camera height");
+  if (shot.cameraHeightM &&
+      numberField("camera height m", *shot.cameraHeightM, &v, "%.3f") && positive(v, "the camera height")) {
+    after.cameraHeightM = v;
+    label = "camera height";
+  }
+  bool byReference = shot.reference.has_value();
+  if (ImGui::Checkbox("reference length", &byReference)) {
+    if (byReference) {
+      metrology::ReferenceLength r;  // P3-P4, the far wall's floor edge, as long as it measures now
+      r.lengthM = live_.measurement ? glm::length(live_.measurement->cornersM[r.to] - live_.measurement->cornersM[r.from])
+                                    : 1.0;
+      if (!(std::isfinite(r.lengthM) && r.lengthM > 0)) r.lengthM = 1.0;
+      after.reference = r;
+      label = "reference length";
+    } else if (shot.cameraHeightM) {
+      after.reference.reset();
+      label = "no reference length";
+    } else {
+      shell.showMessage("the scale needs the camera height or a reference length: set the camera height first");
+    }
+  }
+  rememberWidget("reference length");
+  if (shot.reference) {
+    metrology::ReferenceLength r = *shot.reference;
+    ImGui::TextUnformatted("from");
+    ImGui::SameLine();
+    bool changed = cornerCombo("##reference from", &r.from);
+    ImGui::SameLine();
+    ImGui::TextUnformatted("to");
+    ImGui::SameLine();
+    changed = cornerCombo("##reference to", &r.to) || changed;
+    if (changed) {
+      if (r.from == r.to) {
+        shell.showMessage("the reference needs two different corners");
+      } else {
+        after.reference = r;
+        label = "reference corners";
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton(pickingReference_ ? "click two corners..." : "pick")) {
+      pickingReference_ = !pickingReference_;
+      referencePickFrom_ = -1;
+    }
+    rememberWidget("pick");
+    if (numberField("reference m", r.lengthM, &v, "%.3f") && positive(v, "the reference length")) {
+      after.reference->lengthM = v;
+      label = "reference length";
+    }
+    rememberWidget("reference m");
+    if (pickingReference_) {
+      wrapped(kWarningColour, referencePickFrom_ < 0 ? "click the reference's first corner on the photo (Esc: stop)"
+                                                     : std::string("from ") + metrology::cornerName(referencePickFrom_) +
+                                                           ": click its second corner");
+    }
+    wrapped(kNoteColour, shot.cameraHeightM ? "the camera height gives the scale; the reference checks it"
+                                            : "the reference gives the scale");
+  }
+  if (!label.empty()) applyEdit(shell, after, label);
+}
+
+bool EditMode::pickReference(app::Shell& shell, int corner) {
+  if (!pickingReference_ || !doc_) return false;
+  if (corner < 0) return false;  // not on a handle: an ordinary click (a pan, nothing)
+  if (referencePickFrom_ < 0 || referencePickFrom_ == corner) {
+    referencePickFrom_ = corner;
+    return true;
+  }
+  Shot after = doc_->shot();
+  metrology::ReferenceLength r = after.reference.value_or(metrology::ReferenceLength{});
+  r.from = referencePickFrom_;
+  r.to = corner;
+  if (!after.reference) {  // as long as it measures now, so that the scale stays
+    r.lengthM = live_.measurement ? glm::length(live_.measurement->cornersM[r.to] - live_.measurement->cornersM[r.from])
+                                  : 1.0;
+    if (!(std::isfinite(r.lengthM) && r.lengthM > 0)) r.lengthM = 1.0;
+  }
+  after.reference = r;
+  pickingReference_ = false;
+  referencePickFrom_ = -1;
+  applyEdit(shell, after, "reference corners");
+  shell.showMessage(std::string("reference ") + metrology::cornerName(r.from) + "-" + metrology::cornerName(r.to) +
+                    ": type its length in the Camera panel");
+  return true;
+}
+
+int EditMode::principalHandleAt(const glm::dvec2& windowPx) const {
+  if (!doc_ || !showOverlay_) return -1;
+  const glm::dvec2 at = canvas_.toWindow(doc_->shot().principalPoint());
+  return glm::length(at - windowPx) <= kGrabRadiusPx ? kPrincipalPointHandle : -1;
+}
+
+void EditMode::drawCameraOverlay(ImDrawList* list) const {
+  if (!doc_) return;
+  const Shot& shot = doc_->shot();
+  const auto im = [](const glm::dvec2& p) { return ImVec2(float(p.x), float(p.y)); };
+  // The reference: a line between its corners with the length given.
+  if (shot.reference) {
+    const glm::dvec2 a = canvas_.toWindow(shot.cornersPx[shot.reference->from]);
+    const glm::dvec2 b = canvas_.toWindow(shot.cornersPx[shot.reference->to]);
+    list->AddLine(im(a), im(b), IM_COL32(0, 0, 0, 200), 4.0f);
+    list->AddLine(im(a), im(b), kReferenceColour, 2.0f);
+    char text[48];
+    std::snprintf(text, sizeof text, "%.3f m", shot.reference->lengthM);
+    const glm::dvec2 mid = 0.5 * (a + b) + glm::dvec2(6, 4);
+    list->AddText(im(mid + glm::dvec2(1, 1)), IM_COL32(0, 0, 0, 220), text);
+    list->AddText(im(mid), kReferenceColour, text);
+  }
+  if (pickingReference_ && referencePickFrom_ >= 0) {
+    const glm::dvec2 a = canvas_.toWindow(shot.cornersPx[referencePickFrom_]);
+    list->AddLine(im(a), im(cursorPx_), kReferenceColour, 1.0f);
+  }
+  // The principal point: a crosshair in a circle, apart from the round corner handles.
+  const glm::dvec2 pp = canvas_.toWindow(shot.principalPoint());
+  if (std::isfinite(pp.x) && std::isfinite(pp.y)) {
+    const ImU32 col = shot.principalPointPx ? kPrincipalColour : (kPrincipalColour & 0x00ffffff) | (170u << 24);
+    const bool dragged = drag_ && drag_->corner == kPrincipalPointHandle;
+    list->AddCircle(im(pp), 8.0f, IM_COL32(0, 0, 0, 200), 20, 3.5f);
+    list->AddCircle(im(pp), 8.0f, col, 20, dragged ? 2.5f : 1.5f);
+    for (const glm::dvec2 d : {glm::dvec2(1, 0), glm::dvec2(0, 1)}) {
+      list->AddLine(im(pp - 13.0 * d), im(pp - 3.0 * d), col, 1.5f);
+      list->AddLine(im(pp + 3.0 * d), im(pp + 13.0 * d), col, 1.5f);
+    }
+    list->AddText(im(pp + glm::dvec2(-24, 6)), IM_COL32(0, 0, 0, 220), "PP");  // below left: the horizon's label is above
+    list->AddText(im(pp + glm::dvec2(-25, 5)), col, "PP");
+  }
+  drawHandleWarnings(list, canvas_, shot, live_.handleWarnings);
+}
+
+void EditMode::addCameraTrace(app::TraceRow& row) const {
+  if (!doc_) {
+    row.add("camera", ordered_json(nullptr));
+    row.add("handle_warnings", ordered_json::array());
+    return;
+  }
+  const Shot& shot = doc_->shot();
+  ordered_json camera{{"focal_px", shot.focalPx},
+                      {"focal_source", doc_->focalSource()},
+                      {"focal_mm", shot.focalMm ? ordered_json(shot.focalMm->focalMm) : ordered_json(nullptr)},
+                      {"sensor_width_mm", shot.focalMm ? ordered_json(shot.focalMm->sensorWidthMm) : ordered_json(nullptr)},
+                      {"principal_px", pair(shot.principalPoint())},
+                      {"principal_default", !shot.principalPointPx.has_value()},
+                      {"camera_height_m", optional(shot.cameraHeightM)}};
+  camera["reference"] = shot.reference ? ordered_json{{"from", metrology::cornerName(shot.reference->from)},
+                                                       {"to", metrology::cornerName(shot.reference->to)},
+                                                       {"length_m", shot.reference->lengthM}}
+                                       : ordered_json(nullptr);
+  const modeling::ExifTags& exif = doc_->exif();
+  camera["exif"] = exif.present ? ordered_json{{"make", exif.make},
+                                                {"model", exif.model},
+                                                {"orientation", exif.orientation},
+                                                {"focal_length_mm", optional(exif.focalLengthMm)},
+                                                {"focal_length_35mm", optional(exif.focalLength35mm)}}
+                                : ordered_json(nullptr);
+  ordered_json widgets = ordered_json::object();
+  for (const auto& [name, rect] : widgetRects_) {
+    widgets[name] = ordered_json::array({rect.min.x, rect.min.y, rect.size().x, rect.size().y});
+  }
+  camera["widgets"] = widgets;
+  row.add("camera", camera);
+  ordered_json warnings = ordered_json::array();
+  for (const HandleWarning& w : live_.handleWarnings) {
+    ordered_json handles = ordered_json::array();
+    for (int h : w.handles) handles.push_back(h == kPrincipalPointHandle ? "PP" : metrology::cornerName(h));
+    warnings.push_back({{"handles", handles}, {"label", w.label}, {"blocking", w.blocking}, {"text", w.text}});
+  }
+  row.add("handle_warnings", warnings);
+}
+
+}  // namespace pw::edit
