@@ -136,8 +136,9 @@ void collinear(const metrology::Shot& shot, const metrology::Measurement* m, con
         w.text = where + ": the " + spokenPlane(plane) + " cannot be measured; move " + oddName + " off that line";
       } else if (m) {
         w.dimension = dimension;
-        w.text = where + format(": the %s is uncertain to +-%.0f%%; move %s away from that line", dimension.c_str(),
-                                100.0 * relative, oddName);
+        w.text = where + format(": the %s is uncertain to +-%.0f%%; place %s to the pixel, or use a photo where it lies "
+                                "farther from that line",
+                                dimension.c_str(), 100.0 * relative, oddName);
       } else {
         w.text = where + ": the " + spokenPlane(plane) + " is nearly flat in the photo; move " + oddName +
                  " away from that line";

@@ -2,7 +2,7 @@
 // their plane's quad, a vanishing point behind the camera, a principal point off the
 // photo. Each names its handles, has a short label drawn beside them in a warning
 // ring, and one line in words a person can act on ("P5 is almost on the line P3-P4
-// (1.2 px from it): the length is uncertain to +-40%; ..."). Pure geometry on the
+// (6.4 px from it): the length is uncertain to +-14%; ..."). Pure geometry on the
 // shot and its live measurement: tested headless (tests/edit/handle_warnings_test.cpp).
 #pragma once
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -136,6 +137,49 @@ TEST(HandleWarnings, AlmostOnALineSaysHowUncertainTheLengthIs) {
   // The same corners with a length known to 2%: nothing to act on.
   m.sigma.lengthM = 0.02 * m.size.lengthM;
   EXPECT_FALSE(findLabel(handleWarnings(shot, &m), "on P3-P4")) << all(handleWarnings(shot, &m));
+}
+
+TEST(HandleWarnings, ACameraNearTheFloorMakesTheLengthUncertainOnTheHandleToMove) {
+  // corridor_b seen from nearer the floor, exactly: the camera looks straight ahead, so
+  // a corner's v - cy scales with its height over the camera's (floor: h'/h, ceiling:
+  // (H - h')/(H - h)). Near the floor, P5 and P6 come close to the line P3-P4.
+  const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_b");
+  ASSERT_TRUE(truth.straightAhead());
+  std::string said;
+  // Measured: the length +-6.8% at 0.12 m (no warning), +-14% at 0.06 m.
+  for (const double heightM : {0.12, 0.06}) {
+    metrology::Shot s = corridorShot();
+    s.cameraHeightM = heightM;
+    const double cy = truth.principalPointPx.y;
+    for (int k : {P3, P4, P5, P6}) s.cornersPx[k].y = cy + (s.cornersPx[k].y - cy) * heightM / truth.cameraHeightM;
+    for (int k : {P1, P2, P7, P8}) {
+      s.cornersPx[k].y = cy + (s.cornersPx[k].y - cy) * (truth.heightM - heightM) / (truth.heightM - truth.cameraHeightM);
+    }
+    const LiveMeasurement live = measureLive(s);
+    expectReadable(live);
+    ASSERT_TRUE(live.measurement) << heightM << ": " << live.error;
+    EXPECT_NEAR(live.measurement->size.lengthM, truth.lengthM, 1e-6 * truth.lengthM);
+    const double sigma = live.measurement->sigma.lengthM / live.measurement->size.lengthM;
+    const HandleWarning* w = findLabel(live.handleWarnings, "on P3-P4");
+    if (heightM > 0.1) {  // a length still known to 10%: nothing to act on
+      EXPECT_LE(sigma, 0.10) << heightM;
+      EXPECT_FALSE(w) << heightM << ": " << all(live.handleWarnings);
+      said += "camera at " + std::to_string(heightM) + " m: length known to " + std::to_string(100 * sigma) + "%\n";
+      continue;
+    }
+    EXPECT_GT(sigma, 0.10) << heightM;
+    ASSERT_TRUE(w) << heightM << " m, length +-" << 100 * sigma << "%: " << all(live.handleWarnings);
+    EXPECT_FALSE(w->blocking);
+    EXPECT_TRUE(w->handles[0] == P5 || w->handles[0] == P6);
+    EXPECT_EQ(w->dimension, "length");
+    char percent[48];
+    std::snprintf(percent, sizeof percent, "the length is uncertain to +-%.0f%%", 100 * sigma);
+    EXPECT_NE(w->text.find(percent), std::string::npos) << w->text;
+    // Said once, on the handle, not again among the general warnings.
+    for (const std::string& line : live.warnings) EXPECT_EQ(line.find("the length is uncertain"), std::string::npos);
+    said += w->text + "\n";
+  }
+  std::printf("%s", said.c_str());
 }
 
 TEST(HandleWarnings, CrossedQuadNamesTheCornersThatLookSwapped) {
