@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 #include <opencv2/imgcodecs.hpp>
@@ -196,11 +197,12 @@ bool Document::redo() {
 
 namespace {
 
+// The same focal length: in mm with the same sensor when both are in mm, else the same
+// pixels (a unit switched to px keeps them).
 bool sameFocal(double px, const std::optional<metrology::FocalLengthMm>& mm, double otherPx,
                const std::optional<metrology::FocalLengthMm>& otherMm) {
-  if (mm.has_value() != otherMm.has_value()) return false;
-  if (mm) return mm->focalMm == otherMm->focalMm && mm->sensorWidthMm == otherMm->sensorWidthMm;
-  return px == otherPx;
+  if (mm && otherMm) return mm->focalMm == otherMm->focalMm && mm->sensorWidthMm == otherMm->sensorWidthMm;
+  return std::abs(px - otherPx) <= 1e-9 * std::abs(otherPx);
 }
 
 }  // namespace

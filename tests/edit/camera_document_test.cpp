@@ -87,6 +87,12 @@ TEST(CameraDocument, APhotoAloneTakesItsFocalLengthFromExif) {
   EXPECT_EQ(readJson(copy).at("focal_source").get<std::string>(), "set in the editor");
   doc->undo();
   EXPECT_EQ(doc->focalSource().rfind("EXIF FocalLength", 0), 0u);
+  // In px, the same pixels: still the EXIF's.
+  Shot inPx = doc->shot();
+  inPx.focalMm.reset();
+  doc->apply(inPx, "focal length unit");
+  EXPECT_EQ(doc->focalSource().rfind("EXIF FocalLength", 0), 0u);
+  doc->undo();
 
   // The saved shot reopened: the same source, and saved again byte for byte.
   const std::string bytes = *readFile(doc->path());
