@@ -55,8 +55,24 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
     shell.showMessage("error: " + openError_);
     return;
   }
-  engine::ImageHandle photo;
-  auto uploaded = shell.renderer().addImage(modeling::imageFromBgr(doc->photo()));
+  showDocument(shell, std::move(*doc));
+}
+
+std::optional<Document> EditMode::takeDocument(app::Shell& shell) {
+  if (drag_) endDrag(true);
+  std::optional<Document> doc = std::move(doc_);
+  doc_.reset();
+  if (photo_) (void)shell.renderer().removeImage(photo_);
+  photo_ = {};
+  selected_ = -1;
+  measuredShot_.reset();
+  live_ = {};
+  return doc;
+}
+
+void EditMode::showDocument(app::Shell& shell, Document doc) {
+  const fs::path path = doc.path();
+  auto uploaded = shell.renderer().addImage(modeling::imageFromBgr(doc.photo()));
   if (!uploaded) {
     openError_ = path.string() + ": the photo cannot be shown: " + uploaded.message();
     shell.showMessage("error: " + openError_);
@@ -65,7 +81,7 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
   if (photo_) (void)shell.renderer().removeImage(photo_);
   photo_ = *uploaded;
   openError_.clear();
-  doc_ = std::move(*doc);
+  doc_ = std::move(doc);
   for (const std::string& note : doc_->notes()) shell.showMessage("note: " + note);
   canvas_ = Canvas();  // fits the new photo
   selected_ = -1;
@@ -155,6 +171,9 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
     case GLFW_KEY_DOWN: nudge({0, nudgePx}); break;
     case GLFW_KEY_W:
       walk(shell);
+      break;
+    case GLFW_KEY_B:
+      if (!planMode_.empty()) shell.requestMode(planMode_);
       break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);  // the corner goes back to where the drag began

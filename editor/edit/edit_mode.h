@@ -57,6 +57,15 @@ class EditMode : public app::AppMode {
   // The trace's "document" field: {"path": ..., "dirty": ...} (also in walk rows).
   void addDocumentTrace(app::TraceRow& row) const;
 
+  // Building mode (building_mode.h) lends the editor one shot at a time: the shot open
+  // now (null: none), taken away (the editor is then empty), or shown (fitted, nothing
+  // selected). `planMode` set: B and a panel button go to that mode (the plan).
+  const Document* document() const { return doc_ ? &*doc_ : nullptr; }
+  Document* document() { return doc_ ? &*doc_ : nullptr; }
+  std::optional<Document> takeDocument(app::Shell& shell);
+  void showDocument(app::Shell& shell, Document doc);
+  void setPlanMode(std::string planMode) { planMode_ = std::move(planMode); }
+
  private:
   struct Drag {
     int corner = -1;
@@ -125,6 +134,7 @@ class EditMode : public app::AppMode {
   std::optional<std::filesystem::path> discardOnDrop_;  // a second drop of it discards unsaved changes
   bool showKeys_ = false;
   bool showOverlay_ = true;  // H hides the handles and guides, to see the photo under them
+  std::string planMode_;     // building_mode.h's name while a building is open
 
   // The panel's field being typed into, and its text's value so far.
   unsigned activeField_ = 0;
