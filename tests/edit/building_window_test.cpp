@@ -243,5 +243,71 @@ TEST_F(Building, EachShotIsEditedInTheEditorKeepsItsChangesAcrossSwitchesAndChan
   fs::copy_file(dir_ / "wing_before.json", dir_ / "corridor_a.json", fs::copy_options::overwrite_existing);
 }
 
+TEST_F(Building, CorridorsTurnByKeyAndHandleMoveFreeWithAltAndEachDragIsOneUndoStep) {
+  const fs::path layout = layoutCopy("turn");
+  const auto probe = edit("turn-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  const PlanView view = planView(probe.back());
+  const json& corridors = probe.back().raw.at("building").at("corridors");
+  const glm::dvec2 wingNear = vec2(corridors[1]["position"]), wingSize = vec2(corridors[1]["size_m"]);
+  // The turn handle: 22 px beyond the far wall's centre, along the corridor (up the window at rotation 0).
+  const glm::dvec2 nearPx = view.toWindow(wingNear);
+  const glm::dvec2 handle = view.toWindow(wingNear + glm::dvec2(0, -wingSize.y)) + glm::dvec2(0, -22);
+  const double radius = glm::length(handle - nearPx);
+  Script s;
+  s.key(2, "TAB").key(3, "TAB");  // the wing
+  s.key(4, "R").ctrlKey(6, "Z").ctrlKey(8, "Y").ctrlKey(10, "Z");
+  // The handle carried a quarter turn round the near end, to its left: +90 degrees.
+  s.move(12, handle).at(13, "mouse left down");
+  for (int i = 1; i <= 6; ++i) {
+    const double a = glm::radians(15.0 * i);
+    s.move(13 + i, nearPx + radius * glm::dvec2(-std::sin(a), -std::cos(a)));
+  }
+  s.at(20, "mouse left up").ctrlKey(22, "Z");
+  // Moved 2 m right with Alt (no snapping), then undone.
+  const glm::dvec2 grab = view.toWindow(wingNear + glm::dvec2(0, -3));
+  s.at(24, "key LEFT_ALT down").move(24, grab).at(25, "mouse left down");
+  for (int i = 1; i <= 4; ++i) s.move(25 + i, grab + glm::dvec2(2 * view.scale * i / 4.0, 0));
+  s.at(30, "mouse left up").at(31, "key LEFT_ALT up").ctrlKey(33, "Z").at(35, "quit");
+  const auto rows = edit("turn", layout, s.str());
+  ASSERT_GE(rows.size(), 35u);
+  const auto wing = [&](int frame) { return rows[frame].raw.at("building").at("corridors").at(1); };
+  EXPECT_EQ(wing(5)["rotation_deg"].get<double>(), 90.0);  // R: a quarter turn to the left
+  EXPECT_NEAR(vec2(wing(5)["position"]).x, wingNear.x, 1e-9);  // about the near end
+  EXPECT_EQ(wing(7)["rotation_deg"].get<double>(), 0.0);   // undone
+  EXPECT_EQ(wing(9)["rotation_deg"].get<double>(), 90.0);  // redone
+  EXPECT_EQ(wing(11)["rotation_deg"].get<double>(), 0.0);
+  EXPECT_NEAR(wing(17)["rotation_deg"].get<double>(), 60.0, 1e-6);  // following the handle
+  EXPECT_NEAR(wing(21)["rotation_deg"].get<double>(), 90.0, 1e-6);
+  EXPECT_EQ(wing(23)["rotation_deg"].get<double>(), 0.0);  // the whole drag was one step
+  EXPECT_NEAR(vec2(wing(31)["position"]).x, wingNear.x + 2, 1e-9);
+  EXPECT_TRUE(wing(31)["attach"].is_null());
+  EXPECT_NEAR(vec2(wing(34)["position"]).x, wingNear.x, 1e-12);
+  EXPECT_FALSE(rows[34].raw["building"]["dirty"].get<bool>());
+}
+
+TEST_F(Building, ALayoutThatCannotBeReadOrBuiltIsAMessageAndTheWindowStays) {
+  const fs::path bad = dir_ / "bad.json";
+  std::ofstream(bad) << R"({"corridors": [{"name": "hall", "shot": "corridor_b.json"},
+    {"name": "wing", "shot": "corridor_a.json", "attach": {"to": "nowhere"}}]})";
+  const auto refused = edit("bad", bad, "3 quit\n");
+  ASSERT_GE(refused.size(), 3u);
+  EXPECT_EQ(refused[2].mode, "building");
+  EXPECT_TRUE(refused[2].raw.at("building").is_null());
+  // An offset beyond the hall's far wall: it opens, and says why it cannot be built.
+  const fs::path wide = dir_ / "wide.json";
+  std::ofstream(wide) << R"({"corridors": [{"name": "hall", "shot": "corridor_b.json"},
+    {"name": "wing", "shot": "corridor_a.json", "attach": {"to": "hall", "side": "far", "offset_m": 9}},
+    {"name": "lost", "shot": "missing.json", "position": [-8, 0, 0]}]})";
+  const auto opened = edit("wide", wide, "2 key W down\n2 key W up\n4 quit\n");
+  ASSERT_GE(opened.size(), 4u);
+  const json& building = opened[3].raw.at("building");
+  ASSERT_TRUE(building.is_object());
+  EXPECT_EQ(opened[3].mode, "building");  // W refused: no walk
+  ASSERT_TRUE(building.at("error").is_string());
+  EXPECT_NE(building["error"].get<std::string>().find("wing"), std::string::npos) << building["error"];
+  EXPECT_EQ(building["corridors"].size(), 3u);
+}
+
 }  // namespace
 }  // namespace pw::edit::test
