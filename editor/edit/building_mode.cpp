@@ -63,7 +63,7 @@ void BuildingMode::openLayout(app::Shell& shell, const fs::path& path) {
     shell.showMessage("error: " + openError_);
     return;
   }
-  if (building_ && building_->lent()) (void)editor_.takeDocument(shell);
+  if (editor_.document()) (void)editor_.takeDocument(shell);  // the caller asked about its changes
   building_ = std::move(*building);
   openError_.clear();
   selected_.clear();
@@ -407,15 +407,23 @@ void BuildingMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
       if (building_) addShot(shell, path);
       continue;
     }
-    if (dirty() && discardOnDrop_ != path) {
-      discardOnDrop_ = path;
-      shell.showMessage("unsaved changes in " + building_->path().string() + ": Ctrl+S saves them; drop " +
-                        path.filename().string() + " again to open it and discard them");
-      return;
-    }
-    openLayout(shell, path);
+    openFromEditor(shell, path);
     return;
   }
+}
+
+void BuildingMode::openFromEditor(app::Shell& shell, const fs::path& path) {
+  const Document* shot = editor_.document();
+  const bool unsaved = dirty() || (shot && shot->dirty());
+  if (unsaved && discardOnDrop_ != path) {
+    discardOnDrop_ = path;
+    const fs::path where = dirty() ? building_->path() : shot->path();
+    shell.showMessage("unsaved changes in " + where.string() + ": Ctrl+S saves them; drop " +
+                      path.filename().string() + " again to open it and discard them");
+    return;
+  }
+  openLayout(shell, path);
+  if (building_ && building_->path() == path) shell.requestMode(kName);
 }
 
 void BuildingMode::update(app::Shell& shell, double) {

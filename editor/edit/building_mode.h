@@ -37,6 +37,10 @@ class BuildingMode : public app::AppMode {
   // it; a failure is a message in the window. Unsaved changes of a building open
   // before are dropped: ask first (dirty()).
   void openLayout(app::Shell& shell, const std::filesystem::path& path);
+  // A layout opened from the shot editor (a drop): asks first when the building or the
+  // editor's shot has unsaved changes (the same file again: discard them), then opens
+  // it and shows the plan.
+  void openFromEditor(app::Shell& shell, const std::filesystem::path& path);
   bool hasBuilding() const { return building_.has_value(); }
   bool dirty() const;
 

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "editor/app/shell.h"
+#include "editor/edit/building.h"
 #include "editor/edit/model_walk.h"
 #include "editor/edit/live_measurement.h"
 #include "modeling/corridor_model.h"
@@ -49,6 +50,10 @@ Status EditMode::open(app::Shell& shell) {
 }
 
 void EditMode::openFile(app::Shell& shell, const fs::path& path) {
+  if (layoutOpener_ && isLayoutFile(path)) {
+    layoutOpener_(shell, path);
+    return;
+  }
   auto doc = Document::open(path, options_.open);
   if (!doc) {
     openError_ = doc.message();
@@ -224,6 +229,10 @@ void EditMode::onCursor(const glm::dvec2& p) {
 void EditMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
   if (e.paths.empty()) return;
   const fs::path& path = e.paths.front();
+  if (layoutOpener_ && isLayoutFile(path)) {  // a building: its mode asks about unsaved changes
+    layoutOpener_(shell, path);
+    return;
+  }
   if (doc_ && doc_->dirty() && discardOnDrop_ != path) {
     discardOnDrop_ = path;
     shell.showMessage("unsaved changes in " + doc_->path().string() + ": Ctrl+S saves them; drop " +

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,10 @@ class EditMode : public app::AppMode {
   std::optional<Document> takeDocument(app::Shell& shell);
   void showDocument(app::Shell& shell, Document doc);
   void setPlanMode(std::string planMode) { planMode_ = std::move(planMode); }
+  // Where a layout file opened here (dropped, or openFile) goes: building mode.
+  void setLayoutOpener(std::function<void(app::Shell&, const std::filesystem::path&)> opener) {
+    layoutOpener_ = std::move(opener);
+  }
 
  private:
   struct Drag {
@@ -135,6 +140,7 @@ class EditMode : public app::AppMode {
   bool showKeys_ = false;
   bool showOverlay_ = true;  // H hides the handles and guides, to see the photo under them
   std::string planMode_;     // building_mode.h's name while a building is open
+  std::function<void(app::Shell&, const std::filesystem::path&)> layoutOpener_;
 
   // The panel's field being typed into, and its text's value so far.
   unsigned activeField_ = 0;

@@ -45,6 +45,9 @@ Result<EditReport> runEditWindow(const EditWindowOptions& options) {
   EditMode edit(editOptions, walk);
   editor = &edit;
   BuildingMode building(edit, walk, layout);
+  edit.setLayoutOpener([&building](app::Shell& shell, const std::filesystem::path& path) {
+    building.openFromEditor(shell, path);
+  });
   PW_TRY((*shell)->addMode(edit));
   PW_TRY((*shell)->addMode(walk));
   PW_TRY((*shell)->addMode(building));

@@ -309,5 +309,15 @@ TEST_F(Building, ALayoutThatCannotBeReadOrBuiltIsAMessageAndTheWindowStays) {
   EXPECT_EQ(building["corridors"].size(), 3u);
 }
 
+TEST_F(Building, ALayoutDroppedOnTheShotEditorOpensThePlan) {
+  const fs::path layout = layoutCopy("dropped");
+  const auto rows = edit("dropped", "", "2 drop " + layout.string() + "\n5 quit\n");
+  ASSERT_GE(rows.size(), 5u);
+  EXPECT_EQ(rows[1].mode, "edit");
+  EXPECT_EQ(rows[4].mode, "building");
+  ASSERT_TRUE(rows[4].raw.at("building").is_object());
+  EXPECT_EQ(rows[4].raw["building"]["corridors"].size(), 2u);
+}
+
 }  // namespace
 }  // namespace pw::edit::test
