@@ -206,11 +206,26 @@ void BuildingMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
       selected_ = building_->layout().corridors[next].name;
       break;
     }
+    case GLFW_KEY_DELETE:
+      removeSelected(shell);
+      break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);
       break;
     default: break;
   }
+}
+
+void BuildingMode::removeSelected(app::Shell& shell) {
+  const int i = selectedIndex();
+  if (!building_ || i < 0 || drag_) return;
+  if (building_->layout().corridors.size() < 2) {
+    shell.showMessage("the building's last corridor stays: a layout has one at least");
+    return;
+  }
+  applyLayout(removeCorridor(building_->layout(), world_, i), "remove " + selected_);
+  shell.showMessage("removed \"" + selected_ + "\" from the layout (Ctrl+Z brings it back; its shot file stays)");
+  selected_.clear();
 }
 
 void BuildingMode::onButton(const app::MouseButtonEvent& e) {

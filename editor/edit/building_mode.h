@@ -89,6 +89,7 @@ class BuildingMode : public app::AppMode {
   void dragTo(const glm::dvec2& cursorPx);
   void endDrag(bool keep);
   void turnSelected(double deltaDeg);
+  void removeSelected(app::Shell& shell);
   void applyLayout(const modeling::Layout& after, const std::string& label);
   void undo(app::Shell& shell);
   void redo(app::Shell& shell);

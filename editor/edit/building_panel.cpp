@@ -32,6 +32,7 @@ const char* const kPlanKeys =
     "F                     fit the building\n"
     "Tab, Shift+Tab        next, previous corridor\n"
     "E, Enter, dbl-click   edit its shot's corners (B: back)\n"
+    "Delete                remove it from the layout\n"
     "Esc                   cancel a drag\n"
     "Ctrl+Z; Ctrl+Shift+Z, Ctrl+Y  undo; redo (plan edits)\n"
     "Ctrl+S                save the layout and its shots\n"
@@ -274,8 +275,12 @@ void BuildingMode::drawPlan() {
                   boxes_[i].lengthM, measured ? "" : "\n(not measured)");
     const ImVec2 size = ImGui::CalcTextSize(label);
     list->AddText({float(centre.x) - size.x / 2, float(centre.y) - size.y / 2}, IM_COL32(255, 255, 255, 255), label);
-    if (corridors[i].attach) {
-      list->AddCircleFilled(im(view_.toWindow(poseOf(world_[i]).nearCentre)), 4.0f, IM_COL32(255, 255, 255, 255));
+  }
+  // The openings: where an attached corridor's near end opens the wall of its host.
+  for (size_t i = 0; i < corridors.size(); ++i) {
+    if (const auto opening = openingInHost(building_->layout(), boxes_, world_, int(i))) {
+      list->AddLine(im(view_.toWindow((*opening)[0])), im(view_.toWindow((*opening)[1])), IM_COL32(255, 255, 255, 255),
+                    4.0f);
     }
   }
   // The wall a drag snaps to.

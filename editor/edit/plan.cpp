@@ -102,6 +102,49 @@ std::optional<Snap> findSnap(const Layout& layout, const std::vector<metrology::
   return best;
 }
 
+std::optional<std::array<glm::dvec2, 2>> openingInHost(const Layout& layout,
+                                                       const std::vector<metrology::Dimensions>& boxes,
+                                                       const std::vector<glm::dmat4>& world, int i) {
+  const size_t n = std::min({layout.corridors.size(), boxes.size(), world.size()});
+  if (i < 0 || size_t(i) >= n || !layout.corridors[i].attach) return std::nullopt;
+  const Attachment& a = *layout.corridors[i].attach;
+  if (a.to < 0 || size_t(a.to) >= n) return std::nullopt;
+  const metrology::Dimensions& host = boxes[a.to];
+  const double half = boxes[i].widthM / 2;
+  glm::dvec3 p0, p1;  // in the host's frame
+  if (a.side == Side::kFar) {
+    const double x0 = std::max(a.offsetM - half, -host.widthM / 2), x1 = std::min(a.offsetM + half, host.widthM / 2);
+    if (x1 <= x0) return std::nullopt;
+    p0 = {x0, 0, -host.lengthM};
+    p1 = {x1, 0, -host.lengthM};
+  } else {
+    const double x = a.side == Side::kLeft ? -host.widthM / 2 : host.widthM / 2;
+    p0 = {x, 0, -std::clamp(a.offsetM - half, 0.0, host.lengthM)};
+    p1 = {x, 0, -std::clamp(a.offsetM + half, 0.0, host.lengthM)};
+  }
+  const glm::dvec4 w0 = world[a.to] * glm::dvec4(p0, 1), w1 = world[a.to] * glm::dvec4(p1, 1);
+  return std::array<glm::dvec2, 2>{glm::dvec2(w0.x, w0.z), glm::dvec2(w1.x, w1.z)};
+}
+
+Layout removeCorridor(Layout layout, const std::vector<glm::dmat4>& world, int i) {
+  const int n = int(layout.corridors.size());
+  if (i < 0 || i >= n || n < 2 || size_t(n) > world.size()) return layout;  // a layout keeps one corridor
+  for (int k = 0; k < n; ++k) {
+    modeling::LayoutEntry& entry = layout.corridors[k];
+    if (!entry.attach) continue;
+    if (entry.attach->to == i) {
+      const PlanPose pose = poseOf(world[k]);
+      entry.attach.reset();
+      entry.position = {pose.nearCentre.x, entry.position.y, pose.nearCentre.y};
+      entry.rotationDeg = pose.rotationDeg;
+    } else if (entry.attach->to > i) {
+      --entry.attach->to;
+    }
+  }
+  layout.corridors.erase(layout.corridors.begin() + i);
+  return layout;
+}
+
 Layout placeCorridor(Layout layout, int i, const PlanPose& pose) {
   if (i < 0 || size_t(i) >= layout.corridors.size()) return layout;
   modeling::LayoutEntry& entry = layout.corridors[i];

@@ -63,6 +63,13 @@ std::optional<Snap> findSnap(const modeling::Layout& layout, const std::vector<m
                              const std::vector<glm::dmat4>& world, int guest, const PlanPose& guestPose,
                              double snapDistanceM);
 
+// Where an attached corridor opens into its host, in plan (x, z): the two ends of the
+// opening in the host's wall (modeling::planBuilding's opening, seen from above); none
+// for a placed corridor.
+std::optional<std::array<glm::dvec2, 2>> openingInHost(const modeling::Layout& layout,
+                                                       const std::vector<metrology::Dimensions>& boxes,
+                                                       const std::vector<glm::dmat4>& world, int corridor);
+
 // The plan's edits, each returning the new layout.
 // Places corridor `i` at `pose` (detaching it; its position's height is kept).
 modeling::Layout placeCorridor(modeling::Layout layout, int i, const PlanPose& pose);
@@ -70,6 +77,9 @@ modeling::Layout placeCorridor(modeling::Layout layout, int i, const PlanPose& p
 // after the one it attaches to (the file's rule), keeping their order otherwise.
 // `attach.to` must not move with `i`. Returns the layout and where `i` now is.
 modeling::Layout attachCorridor(modeling::Layout layout, int i, const modeling::Attachment& attach, int* newIndex);
+// Removes corridor `i`; the corridors attached to it stay where they are, placed. The
+// last corridor stays (a layout has one at least).
+modeling::Layout removeCorridor(modeling::Layout layout, const std::vector<glm::dmat4>& world, int i);
 // Turns corridor `i` by `deltaDeg` about its near-end centre (detaching it), the
 // rotation kept in (-180, 180].
 modeling::Layout rotateCorridor(modeling::Layout layout, const std::vector<glm::dmat4>& world, int i, double deltaDeg);

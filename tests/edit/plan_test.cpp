@@ -180,6 +180,48 @@ TEST(Plan, TurningByQuarterTurnsKeepsWholeDegreesAndDetachesAGuestWhereItIs) {
   EXPECT_EQ(free.corridors[1].rotationDeg, 0.0);  // 90 (on the left wall) - 90
 }
 
+TEST(Plan, OpeningsAreWhereAnAttachedNearEndMeetsItsHostsWall) {
+  Layout layout = twoApart();
+  const std::vector<metrology::Dimensions> boxes = {kHall, kWing};
+  EXPECT_FALSE(openingInHost(layout, boxes, placeCorridors(layout, boxes), 1).has_value());  // placed
+  layout.corridors[1].attach = Attachment{0, Side::kFar, 1.0};  // sticks out 0.7 m beyond the right wall
+  auto far = openingInHost(layout, boxes, placeCorridors(layout, boxes), 1);
+  ASSERT_TRUE(far.has_value());
+  EXPECT_NEAR((*far)[0].x, -0.2, 1e-12);
+  EXPECT_NEAR((*far)[1].x, 1.5, 1e-12);
+  EXPECT_NEAR((*far)[0].y, -14.5, 1e-12);
+  layout.corridors[1].attach = Attachment{0, Side::kLeft, 5.0};
+  auto left = openingInHost(layout, boxes, placeCorridors(layout, boxes), 1);
+  ASSERT_TRUE(left.has_value());
+  EXPECT_NEAR((*left)[0].x, -1.5, 1e-12);
+  EXPECT_NEAR((*left)[0].y, -3.8, 1e-12);
+  EXPECT_NEAR((*left)[1].y, -6.2, 1e-12);
+}
+
+TEST(Plan, RemovingACorridorLeavesTheOnesOnItWhereTheyStand) {
+  Layout layout = twoApart();
+  layout.corridors.push_back(placed("end", {0, 0, 0}, 0));
+  layout.corridors[1].attach = Attachment{0, Side::kRight, 6.0};  // wing on the hall
+  layout.corridors[2].attach = Attachment{1, Side::kFar, 0.0};    // end on the wing
+  const std::vector<metrology::Dimensions> boxes = {kHall, kWing, kWing};
+  const auto world = placeCorridors(layout, boxes);
+  const Layout removed = removeCorridor(layout, world, 0);
+  ASSERT_EQ(removed.corridors.size(), 2u);
+  EXPECT_EQ(removed.corridors[0].name, "wing");
+  EXPECT_FALSE(removed.corridors[0].attach.has_value());  // placed where it stood
+  EXPECT_NEAR(removed.corridors[0].position.x, 1.5, 1e-12);
+  EXPECT_NEAR(removed.corridors[0].position.z, -6.0, 1e-12);
+  EXPECT_EQ(removed.corridors[0].rotationDeg, -90.0);
+  ASSERT_TRUE(removed.corridors[1].attach.has_value());  // still on the wing, renumbered
+  EXPECT_EQ(removed.corridors[1].attach->to, 0);
+  const auto after = placeCorridors(removed, {kWing, kWing});
+  EXPECT_NEAR(glm::length(glm::dvec3(after[1][3]) - glm::dvec3(world[2][3])), 0, 1e-9);
+  // The last corridor stays.
+  EXPECT_EQ(removeCorridor(removeCorridor(removed, after, 0), placeCorridors(removeCorridor(removed, after, 0), {kWing}), 0)
+                .corridors.size(),
+            1u);
+}
+
 TEST(Plan, ALayoutWrittenAndReadAgainIsTheSameWithTheFieldsPhotowalkDoesNotRead) {
   const fs::path dir = outputDir();
   const fs::path path = dir / "written.layout.json";
