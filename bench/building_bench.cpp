@@ -5,7 +5,7 @@
 //  - opening a two-corridor layout of ground-truth shots (Building::open: two shot files,
 //    their photos, two measurements), against opening one of its shots alone;
 //  - W in the plan: the whole building's model from the shots in memory
-//    (modeling::buildModel), against one corridor's (buildCorridorScene, the shot
+//    (Building::buildModel: modeling::buildModel), against one corridor's (buildCorridorScene, the shot
 //    editor's W).
 #include <cstdio>
 #include <filesystem>
@@ -103,9 +103,7 @@ int main() {
   const double single = bench::medianMs(kRuns, [&] {
     (void)buildCorridorScene(hall.loaded.shot, hall.loaded.image, hall.measurement);
   });
-  const double whole = bench::medianMs(kRuns, [&] {
-    (void)modeling::buildModel(building->layout(), *shots, modeling::ModelOptions{});
-  });
+  const double whole = bench::medianMs(kRuns, [&] { (void)building->buildModel(nullptr); });
   std::printf("W in the plan, the building's model: %.1f ms (baseline, one corridor's: %.1f ms)\n", whole, single);
   return 0;
 }

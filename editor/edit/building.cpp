@@ -141,6 +141,15 @@ Result<std::vector<modeling::MeasuredShot>> Building::measuredShots(const Docume
   return shots;
 }
 
+Result<modeling::BuiltModel> Building::buildModel(const Document* lentShot) const {
+  auto shots = measuredShots(lentShot);
+  if (!shots) return shots.error();
+  auto model = modeling::buildModel(layout_, *shots, modeling::ModelOptions{});
+  if (!model) return model.error();
+  model->scene.title = path_.stem().string();
+  return model;
+}
+
 void Building::push(Step step) {
   steps_.resize(next_);
   steps_.push_back(std::move(step));

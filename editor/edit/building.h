@@ -64,6 +64,11 @@ class Building {
   std::string problem(int corridor) const;
   // Each corridor's shot as modeling::buildModel takes it, or why one cannot be.
   Result<std::vector<modeling::MeasuredShot>> measuredShots(const Document* lentShot) const;
+  // The whole building's model from the shots as they are (saved or not), as
+  // `photowalk build --layout` makes it from the files: what W walks (and what a
+  // preview of the building would draw). Errors: a shot that cannot be measured, a
+  // layout that cannot be built (planBuilding's message).
+  Result<modeling::BuiltModel> buildModel(const Document* lentShot) const;
 
   // Plan edits, as the shot's: apply is one step; setLive then commitLive (a drag).
   void apply(const modeling::Layout& after, std::string label);

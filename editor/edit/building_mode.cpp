@@ -356,17 +356,11 @@ void BuildingMode::walk(app::Shell& shell) {
   if (!building_) return;
   if (drag_) endDrag(true);
   building_->remeasure(lentShot());
-  auto shots = building_->measuredShots(lentShot());
-  if (!shots) {
-    shell.showMessage("walk: " + shots.message());
-    return;
-  }
-  auto model = modeling::buildModel(building_->layout(), *shots, modeling::ModelOptions{});
+  auto model = building_->buildModel(lentShot());
   if (!model) {
     shell.showMessage("walk: no model: " + model.message());
     return;
   }
-  model->scene.title = building_->path().stem().string();
   if (Status shown = walk_.showScene(shell, std::move(model->scene), kName); !shown) {
     shell.showMessage("walk: no model: " + shown.message());
     return;

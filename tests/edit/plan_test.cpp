@@ -299,11 +299,10 @@ TEST(Building, OpensTheShotsMeasuresThemAndSavesTheLayoutWithUndo) {
   EXPECT_FALSE(building->dirty());
 
   // Both corridors as the walk takes them: the whole building builds.
-  auto shots = building->measuredShots(nullptr);
-  ASSERT_TRUE(shots.ok()) << shots.message();
-  auto model = modeling::buildModel(building->layout(), *shots, modeling::ModelOptions{});
+  auto model = building->buildModel(nullptr);
   ASSERT_TRUE(model.ok()) << model.message();
   EXPECT_EQ(model->plan.openings.size(), 2u);
+  EXPECT_EQ(model->scene.viewpoints.back().description, "wing: entrance");
 }
 
 TEST(Building, ALentShotsEditedCornersChangeTheCorridorsSizeInThePlan) {
