@@ -30,6 +30,8 @@ Result<Layout> readLayoutFile(const fs::path& path) {
     return makeError(where + ": a layout file is {\"corridors\": [ ... ]} with at least one corridor");
   }
   Layout layout;
+  layout.otherFields = doc;
+  layout.otherFields.erase("corridors");
   for (const json& item : doc["corridors"]) {
     const std::string at = where + ": corridor " + std::to_string(layout.corridors.size() + 1);
     if (!item.is_object()) return makeError(at + " must be an object");
@@ -79,9 +81,57 @@ Result<Layout> readLayoutFile(const fs::path& path) {
         entry.rotationDeg = *r;
       }
     }
+    entry.otherFields = item;
+    for (const char* key : {"name", "shot", "position", "rotation_deg", "attach"}) entry.otherFields.erase(key);
     layout.corridors.push_back(std::move(entry));
   }
   return layout;
+}
+
+Status writeLayoutFile(const fs::path& path, const Layout& layout) {
+  json doc = layout.otherFields.is_object() ? layout.otherFields : json::object();
+  json corridors = json::array();
+  std::error_code ec;
+  const fs::path base = fs::absolute(path.parent_path().empty() ? fs::path(".") : path.parent_path(), ec);
+  for (const LayoutEntry& entry : layout.corridors) {
+    json item = entry.otherFields.is_object() ? entry.otherFields : json::object();
+    item["name"] = entry.name;
+    const fs::path relative = fs::relative(fs::absolute(entry.shot, ec), base, ec);
+    item["shot"] = (!ec && !relative.empty()) ? relative.generic_string() : entry.shot.generic_string();
+    if (entry.attach) {
+      const Attachment& a = *entry.attach;
+      if (a.to < 0 || a.to >= static_cast<int>(layout.corridors.size())) {
+        return makeError(path.string() + ": corridor \"" + entry.name + "\" attaches to a corridor not in the layout");
+      }
+      const char* side = a.side == Side::kFar ? "far" : a.side == Side::kLeft ? "left" : "right";
+      item["attach"] = {{"to", layout.corridors[a.to].name}, {"side", side}, {"offset_m", a.offsetM + 0.0}};
+    } else {
+      item["position"] = {entry.position.x + 0.0, entry.position.y + 0.0, entry.position.z + 0.0};
+      item["rotation_deg"] = entry.rotationDeg + 0.0;
+    }
+    corridors.push_back(std::move(item));
+  }
+  doc["corridors"] = std::move(corridors);
+  return writeFileAtomic(path, doc.dump(1) + "\n");
+}
+
+glm::dmat4 placedTransform(const LayoutEntry& entry) {
+  return glm::rotate(glm::translate(glm::dmat4(1.0), entry.position), glm::radians(entry.rotationDeg),
+                     glm::dvec3(0, 1, 0));
+}
+
+glm::dmat4 attachedTransform(const glm::dmat4& worldFromHost, const metrology::Dimensions& host,
+                             const Attachment& a) {
+  glm::dvec3 hostLocal;  // the guest's near-end centre, in the host's frame
+  double turnDeg = 0;    // the guest's rotation relative to the host
+  if (a.side == Side::kFar) {
+    hostLocal = {a.offsetM, 0, -host.lengthM};
+  } else {
+    const bool left = a.side == Side::kLeft;
+    hostLocal = {left ? -host.widthM / 2 : host.widthM / 2, 0, -a.offsetM};
+    turnDeg = left ? 90.0 : -90.0;
+  }
+  return glm::rotate(glm::translate(worldFromHost, hostLocal), glm::radians(turnDeg), glm::dvec3(0, 1, 0));
 }
 
 Layout chainLayout(const std::vector<fs::path>& shots) {
@@ -113,8 +163,7 @@ Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<metrol
     const LayoutEntry& entry = layout.corridors[i];
     const metrology::Dimensions& box = boxes[i];
     if (!entry.attach) {
-      plan.worldFromCorridor[i] = glm::rotate(glm::translate(glm::dmat4(1.0), entry.position),
-                                              glm::radians(entry.rotationDeg), glm::dvec3(0, 1, 0));
+      plan.worldFromCorridor[i] = placedTransform(entry);
       continue;
     }
     const Attachment& a = *entry.attach;
@@ -122,12 +171,9 @@ Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<metrol
     const std::string who = "layout: corridor \"" + entry.name + "\" attached to \"" + layout.corridors[a.to].name + "\"";
     plan.attached[i] = true;
     const double height = std::min(host.heightM, box.heightM);
-    glm::dvec3 hostLocal;     // the guest's near-end centre, in the host's frame
-    double turnDeg = 0;       // the guest's rotation relative to the host
     Opening inHost{a.to, Surface::kFarWall, {}};
     double guestOverlap0 = 0, guestOverlap1 = box.widthM;  // along the guest's near-end s axis
     if (a.side == Side::kFar) {
-      hostLocal = {a.offsetM, 0, -host.lengthM};
       // The guest's x range seen on the host's far wall (s = x + W_host / 2).
       const double x0 = std::max(a.offsetM - box.widthM / 2, -host.widthM / 2);
       const double x1 = std::min(a.offsetM + box.widthM / 2, host.widthM / 2);
@@ -142,14 +188,11 @@ Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<metrol
         return makeError(who + ": an opening " + std::to_string(box.widthM) + " m wide at offset_m " +
                          std::to_string(a.offsetM) + " does not fit in a wall " + std::to_string(host.lengthM) + " m long");
       }
-      hostLocal = {left ? -host.widthM / 2 : host.widthM / 2, 0, -a.offsetM};
-      turnDeg = left ? 90.0 : -90.0;
       inHost.surface = left ? Surface::kLeftWall : Surface::kRightWall;
       const double centre = left ? a.offsetM : host.lengthM - a.offsetM;
       inHost.rect = {centre - box.widthM / 2, 0, centre + box.widthM / 2, height};
     }
-    plan.worldFromCorridor[i] = glm::rotate(glm::translate(plan.worldFromCorridor[a.to], hostLocal),
-                                            glm::radians(turnDeg), glm::dvec3(0, 1, 0));
+    plan.worldFromCorridor[i] = attachedTransform(plan.worldFromCorridor[a.to], host, a);
     plan.openings.push_back(inHost);
     plan.openings.push_back(Opening{static_cast<int>(i), Surface::kNearEnd, {guestOverlap0, 0, guestOverlap1, height}});
   }

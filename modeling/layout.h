@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "base/result.h"
 #include "modeling/surfaces.h"
@@ -39,13 +40,29 @@ struct LayoutEntry {
   glm::dvec3 position{0.0};
   double rotationDeg = 0;
   std::optional<Attachment> attach;
+  nlohmann::json otherFields = nlohmann::json::object();  // the corridor's fields photowalk does not read, kept
 };
 
 struct Layout {
   std::vector<LayoutEntry> corridors;
+  nlohmann::json otherFields = nlohmann::json::object();  // the file's fields besides "corridors", kept
 };
 
 Result<Layout> readLayoutFile(const std::filesystem::path& path);
+
+// Writes the layout atomically: each corridor's name, shot (relative to the file's
+// folder where possible) and either position and rotation_deg or attach (to: the
+// host's name), with the fields photowalk does not read as they were read.
+Status writeLayoutFile(const std::filesystem::path& path, const Layout& layout);
+
+// Where a placed corridor stands: position, then rotation_deg about +Y.
+glm::dmat4 placedTransform(const LayoutEntry& entry);
+
+// Where an attached corridor stands: its world-from-corridor transform, given its
+// host's and the host's box (README "Layout files"). No checks: planBuilding says
+// whether the attachment fits.
+glm::dmat4 attachedTransform(const glm::dmat4& worldFromHost, const metrology::Dimensions& host,
+                             const Attachment& attach);
 
 // The layout used when several shots are given without a layout file: each
 // corridor continues from the previous one's far end, centred.

@@ -23,12 +23,26 @@ Result<engine::Camera> shotCamera(const std::filesystem::path& path) {
 
 Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions) {
-  BuiltModel model;
-  model.layout = layout;
-  std::vector<metrology::Dimensions> boxes;
+  std::vector<MeasuredShot> shots;
   for (const modeling::LayoutEntry& entry : layout.corridors) {
     auto measured = measureShotFile(entry.shot, measureOptions);
     if (!measured) return measured.error();
+    shots.push_back(std::move(*measured));
+  }
+  return buildModel(layout, shots, options);
+}
+
+Result<BuiltModel> buildModel(const modeling::Layout& layout, const std::vector<MeasuredShot>& shots,
+                              const modeling::ModelOptions& options) {
+  if (shots.empty() || shots.size() != layout.corridors.size()) {
+    return makeError("a building needs one measured shot per corridor, and at least one");
+  }
+  BuiltModel model;
+  model.layout = layout;
+  std::vector<metrology::Dimensions> boxes;
+  for (size_t i = 0; i < shots.size(); ++i) {
+    const modeling::LayoutEntry& entry = layout.corridors[i];
+    const MeasuredShot* measured = &shots[i];
     auto corridor = modeling::makeCorridorModel(entry.name, measured->loaded.image, measured->measurement,
                                                 entry.attach.has_value(), options);
     if (!corridor) return corridor.error();

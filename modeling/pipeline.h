@@ -38,5 +38,9 @@ struct BuiltModel {
 // walls between corridors and assembles the scene. Nothing is written.
 Result<BuiltModel> buildModel(const Layout& layout, const ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions = {});
+// The same from shots already measured, one per corridor of the layout, in its order
+// (the editor's shots as they are, saved or not).
+Result<BuiltModel> buildModel(const Layout& layout, const std::vector<MeasuredShot>& shots,
+                              const ModelOptions& options);
 
 }  // namespace pw::modeling

@@ -9,7 +9,7 @@ namespace pw::editor {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: photowalk edit [PHOTO | SHOT.json] [-o SHOT.json] [--size WxH] [--no-vsync] [--cpu]\n"
+    "usage: photowalk edit [PHOTO | SHOT.json | LAYOUT.json] [-o SHOT.json] [--size WxH] [--no-vsync] [--cpu]\n"
     "                      [--replay SCRIPT] [--trace OUT.jsonl]\n\n"
     "Opens the editor: the photo on a canvas that pans and zooms, the corridor's eight\n"
     "corners P1..P8 as handles to drag (with a loupe), the measurement (width, height,\n"
@@ -17,7 +17,9 @@ constexpr const char* kUsage =
     "as they move, the camera's focal length, principal point and height, undo/redo,\n"
     "Save (Ctrl+S) and a walk through the model (W; Esc comes back). A photo without a\n"
     "shot file gets its corners from automatic detection (or a default box). F1 in the\n"
-    "window lists the keys; README \"The editor\" too.\n\n"
+    "window lists the keys; README \"The editor\" too. A layout file (a building) opens\n"
+    "its plan: move, turn and snap the corridors, edit each shot, walk the building, save\n"
+    "(README \"Building mode\").\n\n"
     "  -o, --output SHOT.json  where Save writes the shot of a photo opened alone\n"
     "                          (default: beside the photo, as PHOTO-STEM.shot.json)\n"
     "  --size WxH              window size (default 1280x720)\n"
@@ -42,7 +44,7 @@ int runEdit(Args& args) {
   options.forceCpu = args.flag("--cpu");
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
-  if (positionals.size() > 1) return fail("edit takes at most one photo or shot file; see photowalk edit --help");
+  if (positionals.size() > 1) return fail("edit takes at most one photo, shot or layout file; see photowalk edit --help");
   if (!positionals.empty()) options.file = positionals[0];
   if (output) options.open.photoShotPath = *output;
   if (sizeText) {

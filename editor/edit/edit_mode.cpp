@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "editor/app/shell.h"
+#include "editor/edit/building.h"
 #include "editor/edit/model_walk.h"
 #include "editor/edit/live_measurement.h"
 #include "modeling/corridor_model.h"
@@ -54,14 +55,34 @@ Status EditMode::open(app::Shell& shell) {
 }
 
 void EditMode::openFile(app::Shell& shell, const fs::path& path) {
+  if (layoutOpener_ && isLayoutFile(path)) {
+    layoutOpener_(shell, path);
+    return;
+  }
   auto doc = Document::open(path, options_.open);
   if (!doc) {
     openError_ = doc.message();
     shell.showMessage("error: " + openError_);
     return;
   }
-  engine::ImageHandle photo;
-  auto uploaded = shell.renderer().addImage(modeling::imageFromBgr(doc->photo()));
+  showDocument(shell, std::move(*doc));
+}
+
+std::optional<Document> EditMode::takeDocument(app::Shell& shell) {
+  if (drag_) endDrag(true);
+  std::optional<Document> doc = std::move(doc_);
+  doc_.reset();
+  if (photo_) (void)shell.renderer().removeImage(photo_);
+  photo_ = {};
+  selected_ = -1;
+  measuredShot_.reset();
+  live_ = {};
+  return doc;
+}
+
+void EditMode::showDocument(app::Shell& shell, Document doc) {
+  const fs::path path = doc.path();
+  auto uploaded = shell.renderer().addImage(modeling::imageFromBgr(doc.photo()));
   if (!uploaded) {
     openError_ = path.string() + ": the photo cannot be shown: " + uploaded.message();
     shell.showMessage("error: " + openError_);
@@ -70,7 +91,7 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
   if (photo_) (void)shell.renderer().removeImage(photo_);
   photo_ = *uploaded;
   openError_.clear();
-  doc_ = std::move(*doc);
+  doc_ = std::move(doc);
   for (const std::string& note : doc_->notes()) shell.showMessage("note: " + note);
   canvas_ = Canvas();  // fits the new photo
   selected_ = -1;
@@ -161,6 +182,9 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
     case GLFW_KEY_W:
       walk(shell);
       break;
+    case GLFW_KEY_B:
+      if (!planMode_.empty()) shell.requestMode(planMode_);
+      break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);  // the corner goes back to where the drag began
       pickingReference_ = false;
@@ -216,6 +240,10 @@ void EditMode::onCursor(const glm::dvec2& p) {
 void EditMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
   if (e.paths.empty()) return;
   const fs::path& path = e.paths.front();
+  if (layoutOpener_ && isLayoutFile(path)) {  // a building: its mode asks about unsaved changes
+    layoutOpener_(shell, path);
+    return;
+  }
   if (doc_ && doc_->dirty() && discardOnDrop_ != path) {
     discardOnDrop_ = path;
     shell.showMessage("unsaved changes in " + doc_->path().string() + ": Ctrl+S saves them; drop " +

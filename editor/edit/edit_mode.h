@@ -8,6 +8,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,19 @@ class EditMode : public app::AppMode {
 
   // The trace's "document" field: {"path": ..., "dirty": ...} (also in walk rows).
   void addDocumentTrace(app::TraceRow& row) const;
+
+  // Building mode (building_mode.h) lends the editor one shot at a time: the shot open
+  // now (null: none), taken away (the editor is then empty), or shown (fitted, nothing
+  // selected). `planMode` set: B and a panel button go to that mode (the plan).
+  const Document* document() const { return doc_ ? &*doc_ : nullptr; }
+  Document* document() { return doc_ ? &*doc_ : nullptr; }
+  std::optional<Document> takeDocument(app::Shell& shell);
+  void showDocument(app::Shell& shell, Document doc);
+  void setPlanMode(std::string planMode) { planMode_ = std::move(planMode); }
+  // Where a layout file opened here (dropped, or openFile) goes: building mode.
+  void setLayoutOpener(std::function<void(app::Shell&, const std::filesystem::path&)> opener) {
+    layoutOpener_ = std::move(opener);
+  }
 
  private:
   struct Drag {
@@ -145,6 +159,8 @@ class EditMode : public app::AppMode {
   // The Camera panel's widgets as last drawn (window pixels), by name: the trace's
   // "camera"."widgets", so that replay scripts can click them.
   std::vector<std::pair<std::string, WindowRect>> widgetRects_;
+  std::string planMode_;     // building_mode.h's name while a building is open
+  std::function<void(app::Shell&, const std::filesystem::path&)> layoutOpener_;
 
   // The panel's field being typed into, and its text's value so far.
   unsigned activeField_ = 0;

@@ -1,7 +1,10 @@
 #include "editor/edit/edit_window.h"
 
+#include <utility>
+
 #include "base/atomic_file.h"
 #include "editor/app/shell.h"
+#include "editor/edit/building_mode.h"
 #include "editor/edit/edit_mode.h"
 #include "editor/edit/model_walk.h"
 #include "editor/walk/replay.h"
@@ -36,11 +39,19 @@ Result<EditReport> runEditWindow(const EditWindowOptions& options) {
   EditModeOptions editOptions;
   editOptions.file = options.file;
   editOptions.open = options.open;
+  // A layout file opens the building's plan (building_mode.h), which lends its shots to the editor.
+  std::optional<std::filesystem::path> layout;
+  if (options.file && isLayoutFile(*options.file)) layout = std::exchange(editOptions.file, std::nullopt);
   EditMode edit(editOptions, walk);
   editor = &edit;
+  BuildingMode building(edit, walk, layout);
+  edit.setLayoutOpener([&building](app::Shell& shell, const std::filesystem::path& path) {
+    building.openFromEditor(shell, path);
+  });
   PW_TRY((*shell)->addMode(edit));
   PW_TRY((*shell)->addMode(walk));
-  auto run = (*shell)->run(edit.name());
+  PW_TRY((*shell)->addMode(building));
+  auto run = (*shell)->run(layout ? building.name() : edit.name());
   if (!run) return run.error();
 
   EditReport report;

@@ -32,7 +32,7 @@ Result<engine::Scene> buildCorridorScene(const metrology::Shot& shot, const cv::
 }
 
 ModelWalk::ModelWalk(std::string backTo, std::function<void(app::TraceRow&)> extraTrace)
-    : backTo_(std::move(backTo)), extraTrace_(std::move(extraTrace)) {}
+    : backTo_(backTo), editorMode_(std::move(backTo)), extraTrace_(std::move(extraTrace)) {}
 
 ModelWalk::~ModelWalk() = default;
 
@@ -45,18 +45,24 @@ void ModelWalk::release(app::Shell& shell) {
 
 Status ModelWalk::show(app::Shell& shell, const metrology::Shot& shot, const cv::Mat& photo,
                        const metrology::Measurement& measurement) {
-  if (walk_ && shot_ && sameShot(*shot_, shot)) return {};  // the same model: walk on where it was left
+  if (walk_ && shot_ && sameShot(*shot_, shot) && backTo_ == editorMode_) return {};  // walk on where it was left
   auto scene = buildCorridorScene(shot, photo, measurement);
   if (!scene) return scene.error();
-  auto owned = std::make_unique<engine::Scene>(std::move(*scene));
+  PW_TRY(showScene(shell, std::move(*scene), editorMode_));
+  shot_ = shot;
+  return {};
+}
+
+Status ModelWalk::showScene(app::Shell& shell, engine::Scene scene, std::string backTo) {
+  auto owned = std::make_unique<engine::Scene>(std::move(scene));
   walk::WalkModeOptions options;
-  options.escapeTo = backTo_;
+  options.escapeTo = backTo;
   auto walk = std::make_unique<walk::WalkMode>(*owned, options);
   PW_TRY(walk->open(shell));  // uploads the scene
   release(shell);
   scene_ = std::move(owned);
   walk_ = std::move(walk);
-  shot_ = shot;
+  backTo_ = std::move(backTo);
   return {};
 }
 

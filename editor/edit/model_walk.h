@@ -35,6 +35,9 @@ class ModelWalk : public app::AppMode {
   // built (the message says why), the upload failing; the last model then stays.
   Status show(app::Shell& shell, const metrology::Shot& shot, const cv::Mat& photo,
               const metrology::Measurement& measurement);
+  // Makes `scene` (a whole building: modeling::buildModel) the one walked, from its
+  // first viewpoint; Esc then goes back to the mode `backTo`. Errors: the upload.
+  Status showScene(app::Shell& shell, engine::Scene scene, std::string backTo);
   bool hasModel() const { return walk_ != nullptr; }
 
   std::string_view name() const override { return "walk"; }
@@ -52,6 +55,7 @@ class ModelWalk : public app::AppMode {
   void release(app::Shell& shell);
 
   std::string backTo_;
+  std::string editorMode_;  // the mode that walks a shot (the constructor's backTo)
   std::function<void(app::TraceRow&)> extraTrace_;
   // The walk borrows the scene: declared after it, so destroyed first.
   std::unique_ptr<engine::Scene> scene_;

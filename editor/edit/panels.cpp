@@ -35,6 +35,7 @@ const char* const kKeys =
     "Ctrl+Shift+Z, Ctrl+Y  redo\n"
     "Ctrl+S             save\n"
     "W                  walk through the model (Esc: back)\n"
+    "B                  back to the building's plan (a layout open)\n"
     "F1                 keys";
 
 void wrapped(const ImVec4& colour, const std::string& text) {
@@ -126,6 +127,10 @@ void EditMode::drawPanel(app::Shell& shell) {
   ImGui::BeginDisabled(!live_.measurement);
   if (ImGui::Button("Walk (W)")) walk(shell);
   ImGui::EndDisabled();
+  if (!planMode_.empty()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Plan (B)")) shell.requestMode(planMode_);
+  }
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
   drawMeasurement();
