@@ -24,11 +24,6 @@ constexpr float kMaxElevationRad = 1.4835299f;   // 85 degrees
 constexpr float kMinDistanceM = 0.1f;
 const glm::vec3 kPaneBackground(0.13f, 0.14f, 0.16f);
 
-// Reduced and full results of one request in the order they are built.
-uint64_t ordinal(uint64_t request, PreviewResolution from) {
-  return 2 * request + (from == PreviewResolution::kFull ? 1 : 0);
-}
-
 }  // namespace
 
 void orbitCamera(engine::Camera& camera, const glm::vec3& centre, float yawRad, float pitchRad) {
@@ -127,11 +122,9 @@ Status Preview::waitForFull(app::Shell& shell, const metrology::Shot& shot, bool
 }
 
 void Preview::take(app::Shell& shell, PreviewBuilder::Done done, const metrology::Shot& shot) {
-  if (done.documentId != documentId_) return;  // of a document no longer open
-  const uint64_t order = ordinal(done.id, done.from);
-  if (shownDocument_ == documentId_ && order <= ordinal(shownRequest_, builtFrom_)) return;  // older than shown
-  // The full model of a shot since changed: a newer build has been asked for.
-  if (done.from == PreviewResolution::kFull && !sameShot(done.shot, shot)) return;
+  std::optional<ShownBuild> shown;
+  if (scene_) shown = ShownBuild{shownDocument_, shownRequest_, builtFrom_};
+  if (!takesPlaceOf(done, documentId_, shown, shot)) return;
   if (!done.model) {
     error_ = done.model.message();
     return;

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "editor/edit/document.h"
 #include "editor/edit/model_walk.h"
 #include "metrology/measure.h"
 
@@ -33,6 +34,18 @@ metrology::Shot scaledShot(const metrology::Shot& shot, glm::ivec2 size) {
   scaled.focalMm.reset();
   for (glm::dvec2& corner : scaled.cornersPx) corner = scale(corner);
   return scaled;
+}
+
+bool takesPlaceOf(const PreviewBuilder::Done& done, uint64_t openDocumentId, const std::optional<ShownBuild>& shown,
+                  const metrology::Shot& current) {
+  if (done.documentId != openDocumentId) return false;
+  const auto order = [](uint64_t request, PreviewResolution from) {
+    return 2 * request + (from == PreviewResolution::kFull ? 1 : 0);
+  };
+  if (shown && shown->documentId == openDocumentId && order(done.id, done.from) <= order(shown->request, shown->from)) {
+    return false;
+  }
+  return done.from == PreviewResolution::kReduced || sameShot(done.shot, current);
 }
 
 const char* resolutionName(PreviewResolution resolution) {

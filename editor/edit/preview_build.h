@@ -118,4 +118,19 @@ class PreviewBuilder {
   std::thread thread_;  // last: started once the rest exists
 };
 
+// The model a preview shows: which document's, which request's, from which photo.
+struct ShownBuild {
+  uint64_t documentId = 0;
+  uint64_t request = 0;
+  PreviewResolution from = PreviewResolution::kFull;
+};
+
+// Whether a finished build takes the place of the one shown: it is of the document
+// open, newer than the one shown (by request; of one request, the reduced model comes
+// before the full one), and, if built from the full photo, of the shot as it is now
+// (else a newer build has been asked for; a reduced model of a drag's earlier step
+// is still shown, so that the preview follows the drag).
+bool takesPlaceOf(const PreviewBuilder::Done& done, uint64_t openDocumentId, const std::optional<ShownBuild>& shown,
+                  const metrology::Shot& current);
+
 }  // namespace pw::edit

@@ -47,6 +47,30 @@ TEST(PreviewBuild, APhotoIsReducedToItsLongestSideAndASmallOneIsKept) {
   EXPECT_EQ(reducePhoto(small, 1024).data, small.data);
 }
 
+TEST(PreviewBuild, OnlyANewerResultOfTheOpenDocumentAndAFullOneOfTheShotAsItIsTakeThePlaceOfTheOneShown) {
+  const metrology::Shot now = corridorB();
+  metrology::Shot earlier = now;
+  earlier.cornersPx[metrology::P5].x -= 3;
+  const auto done = [](uint64_t id, uint64_t document, const metrology::Shot& shot, PreviewResolution from) {
+    PreviewBuilder::Done d;
+    d.id = id;
+    d.documentId = document;
+    d.shot = shot;
+    d.from = from;
+    return d;
+  };
+  const auto kReduced = PreviewResolution::kReduced, kFull = PreviewResolution::kFull;
+  const ShownBuild shown{2, 5, kReduced};
+  EXPECT_TRUE(takesPlaceOf(done(1, 2, now, kFull), 2, std::nullopt, now));    // the first model
+  EXPECT_FALSE(takesPlaceOf(done(6, 1, now, kFull), 2, shown, now));          // of a document since closed
+  EXPECT_FALSE(takesPlaceOf(done(4, 2, now, kFull), 2, shown, now));          // older than the one shown
+  EXPECT_TRUE(takesPlaceOf(done(5, 2, now, kFull), 2, shown, now));           // the full one after its reduced one
+  EXPECT_FALSE(takesPlaceOf(done(5, 2, now, kReduced), 2, ShownBuild{2, 5, kFull}, now));  // not the other way
+  EXPECT_FALSE(takesPlaceOf(done(6, 2, earlier, kFull), 2, shown, now));      // full, but the shot has changed since
+  EXPECT_TRUE(takesPlaceOf(done(6, 2, earlier, kReduced), 2, shown, now));    // a drag's earlier step: followed
+  EXPECT_TRUE(takesPlaceOf(done(1, 3, now, kFull), 3, shown, now));           // a new document's first
+}
+
 TEST(PreviewCamera, OrbitingKeepsTheCentreWhereItIsInThePicture) {
   engine::Camera camera;
   camera.position = {0.4f, 1.6f, 5.5f};
