@@ -213,15 +213,18 @@ void Preview::drawUi(const WindowRect& toolbar) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   char status[96];
-  if (builder_ && builder_->busy()) {
-    std::snprintf(status, sizeof status, "building...");
-  } else if (haveModel) {
-    std::snprintf(status, sizeof status, "%s %dx%d, %.0f ms", resolutionName(builtFrom_), builtPhotoPx_.x,
-                  builtPhotoPx_.y, buildMs_);
+  const bool building = builder_ && builder_->busy();
+  if (haveModel) {
+    std::snprintf(status, sizeof status, "%s %dx%d%s", resolutionName(builtFrom_), builtPhotoPx_.x, builtPhotoPx_.y,
+                  building ? " ..." : "");
   } else {
-    std::snprintf(status, sizeof status, "no model yet");
+    std::snprintf(status, sizeof status, building ? "building..." : "no model yet");
   }
   ImGui::TextDisabled("%s", status);
+  if (haveModel && ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("cut from the %s photo (%d x %d) in %.0f ms on the worker thread%s", resolutionName(builtFrom_),
+                      builtPhotoPx_.x, builtPhotoPx_.y, buildMs_, building ? "; a newer model is being built" : "");
+  }
   ImGui::End();
 
   // Why there is no model, in the pane.

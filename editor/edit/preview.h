@@ -12,8 +12,8 @@
 // (the model's Photo viewpoint), which it then follows as the model is rebuilt.
 #pragma once
 
-#include <cstdint>
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>

@@ -62,7 +62,7 @@ modeling::ModelOptions previewModelOptions(PreviewResolution resolution) {
   modeling::ModelOptions options;
   if (resolution == PreviewResolution::kReduced) {
     options.maxTextureSide = 1024;
-    options.maxTexturePixels = 0.15e6;
+    options.maxTexturePixels = 0.08e6;
   }
   return options;
 }

@@ -55,7 +55,7 @@ struct PreviewModel {
 
 // The model's texture budget: kFull, the walk's and `photowalk build`'s (up to 3
 // megapixels a surface); kReduced, enough for a pane a few hundred pixels wide
-// (0.15 megapixels a surface), since the texels, not the photo's size, cost the time.
+// (0.08 megapixels a surface), since the texels, not the photo's size, cost the time.
 modeling::ModelOptions previewModelOptions(PreviewResolution resolution);
 
 // Measures `shot` (in the pixels of the document's full photo) again in the pixels of

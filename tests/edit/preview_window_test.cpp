@@ -275,6 +275,7 @@ TEST_F(Preview, AfterADragTheModelIsReducedThenFullAndCurrentWhileFramesGoOn) {
   constexpr int kDragAt = 4, kSteps = 20, kReleaseAt = kDragAt + kSteps + 1, kQuitAt = 600;
   Script s;
   s.at(1, "preview-wait").drag(kDragAt, p5, {30, -12}, kSteps).at(kQuitAt, "quit");
+  s.at(kDragAt + 15, "capture preview_dragging.png");
   const auto rows = edit("preview_drag", file, s.str());
   ASSERT_GE(rows.size(), size_t(kQuitAt));
 
@@ -297,6 +298,13 @@ TEST_F(Preview, AfterADragTheModelIsReducedThenFullAndCurrentWhileFramesGoOn) {
     }
   }
   EXPECT_GT(reduced, 0);
+  // The reduced model in the pane during the drag: not the pane's background.
+  const PreviewRow dragging = previewOf(rows[kDragAt + 15]);
+  if (dragging.builtFrom == "reduced") {
+    const cv::Mat pane = paneOf(dir_ / "preview_dragging.png", dragging.rect);
+    ASSERT_FALSE(pane.empty());
+    EXPECT_LT(shareOfColour(pane, {41, 36, 33}), 0.02);
+  }
   ASSERT_GT(full, 0u) << "the full model did not come within " << kQuitAt - kReleaseAt << " frames";
   EXPECT_EQ(rows[full].corners, rows[kReleaseAt].corners);
   EXPECT_NE(rows[full].corners[4], rows[2].corners[4]);
