@@ -110,6 +110,7 @@ void EditMode::onLeave(app::Shell&) {
   // Nothing stays held while another mode runs: a drag ends where it was.
   if (drag_) endDrag(true);
   panFrom_.reset();
+  preview_.endOrbit();
   keys_.fill(false);
 }
 

@@ -45,7 +45,12 @@ class Preview {
   ~Preview();  // the worker finishes its build first
 
   bool shown() const { return shown_; }
-  void setShown(bool shown) { shown_ = shown; }
+  void setShown(bool shown) {
+    shown_ = shown;
+    endOrbit();
+  }
+  // Lets go of an orbit in progress (the editor left for the walk, the pane hidden).
+  void endOrbit() { orbitFrom_.reset(); }
 
   // A new document: its photo (BGR, shared, never written); what was shown is of
   // the old one until the new one's first model arrives.
