@@ -27,6 +27,7 @@ constexpr double kGrabRadiusPx = 12;   // a press this near a handle takes it
 constexpr double kSlowFactor = 0.1;    // Shift while dragging
 constexpr double kNudgePx = 1.0;       // arrow keys; Shift: a tenth
 constexpr long kNudgeLoupeSteps = 60;  // the loupe stays a second after a nudge
+constexpr double kPreviewToolbarPx = 30;  // the 3D preview's toolbar, over its pane
 
 ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y}); }
 
@@ -46,7 +47,8 @@ std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
              std::string text;
              if (!(words >> text)) return makeError("expected 'type TEXT'");
              return std::any(TypeTextEvent{text});
-           }}};
+           }},
+          {"preview-wait", [](std::istream&) -> Result<std::any> { return std::any(PreviewWaitEvent{}); }}};
 }
 
 Status EditMode::open(app::Shell& shell) {
@@ -92,6 +94,7 @@ void EditMode::showDocument(app::Shell& shell, Document doc) {
   photo_ = *uploaded;
   openError_.clear();
   doc_ = std::move(doc);
+  preview_.setDocument(doc_->photo());
   for (const std::string& note : doc_->notes()) shell.showMessage("note: " + note);
   canvas_ = Canvas();  // fits the new photo
   selected_ = -1;
@@ -110,6 +113,18 @@ void EditMode::layOut(app::Shell& shell) {
   const glm::ivec2 photoSize = doc_ ? glm::ivec2(doc_->photo().cols, doc_->photo().rows) : glm::ivec2(0);
   canvas_.setArea({{0.0, 0.0}, {std::max(1.0, width - panelWidthPx_), std::max(1.0, double(windowSize_.y))}},
                   photoSize);
+  // The 3D preview: the lower part of the panel's column, its toolbar above it.
+  const double height = windowSize_.y;
+  panelHeightPx_ = height;
+  preview_.setRect({});
+  previewToolbar_ = {};
+  if (doc_ && preview_.shown()) {
+    const double paneHeight = std::floor(std::min(0.75 * panelWidthPx_, 0.45 * height));
+    const double left = width - panelWidthPx_;
+    preview_.setRect({{left, height - paneHeight}, {width, height}});
+    previewToolbar_ = {{left, height - paneHeight - kPreviewToolbarPx}, {width, height - paneHeight}};
+    panelHeightPx_ = std::max(0.0, height - paneHeight - kPreviewToolbarPx);
+  }
 }
 
 void EditMode::onEnter(app::Shell& shell) {
@@ -121,6 +136,7 @@ void EditMode::onLeave(app::Shell&) {
   // Nothing stays held while another mode runs: a drag ends where it was.
   if (drag_) endDrag(true);
   panFrom_.reset();
+  preview_.endOrbit();
   keys_.fill(false);
 }
 
@@ -131,6 +147,10 @@ bool EditMode::overCanvas(const glm::dvec2& p) const {
 
 void EditMode::onInput(app::Shell& shell, const app::InputEvent& event) {
   layOut(shell);
+  if (preview_.onInput(event)) {  // an orbit or the wheel over the 3D preview
+    if (const auto* cursor = std::get_if<app::CursorEvent>(&event)) cursorPx_ = cursor->positionPx;
+    return;
+  }
   std::visit(Overloaded{[&](const app::KeyEvent& e) { onKey(shell, e); },
                         [&](const app::MouseButtonEvent& e) { onButton(shell, e); },
                         [&](const app::CursorEvent& e) { onCursor(e.positionPx); },
@@ -174,6 +194,10 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
       break;
     case GLFW_KEY_H:
       showOverlay_ = !showOverlay_;
+      break;
+    case GLFW_KEY_P:
+      preview_.setShown(!preview_.shown());
+      layOut(shell);
       break;
     case GLFW_KEY_LEFT: nudge({-nudgePx, 0}); break;
     case GLFW_KEY_RIGHT: nudge({nudgePx, 0}); break;
@@ -325,6 +349,14 @@ Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
     if (ImGui::GetCurrentContext()) ImGui::GetIO().AddInputCharactersUTF8(typed->text.c_str());
     return {};
   }
+  if (std::any_cast<PreviewWaitEvent>(&event.value)) {
+    if (!doc_) return makeError("preview-wait: no file is open");
+    remeasure();
+    if (Status built = preview_.waitForFull(shell, doc_->shot(), live_.measurement.has_value(), 120.0); !built) {
+      return makeError("preview-wait: " + built.message());
+    }
+    return {};
+  }
   const auto* copy = std::any_cast<SaveCopyEvent>(&event.value);
   if (!copy) return AppMode::onReplayEvent(shell, event);
   if (!doc_) return makeError("save-copy: no file is open");
@@ -345,6 +377,7 @@ void EditMode::remeasure() {
 void EditMode::update(app::Shell& shell, double) {
   layOut(shell);
   remeasure();
+  if (doc_) preview_.update(shell, doc_->shot(), live_.measurement.has_value(), drag_.has_value());
   ++step_;
 }
 
@@ -394,6 +427,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
     row.add("loupe", ordered_json(nullptr));
   }
   addCameraTrace(row);
+  row.add("preview", preview_.trace(doc_ ? &doc_->shot() : nullptr));
 }
 
 app::FrameContent EditMode::frame(app::Shell&) {
@@ -406,6 +440,7 @@ app::FrameContent EditMode::frame(app::Shell&) {
   canvas.rect = pixelRect(canvas_.area());
   canvas.background = glm::vec4(0.17f, 0.17f, 0.19f, 1.0f);
   content.views.push_back(canvas);
+  if (const std::optional<engine::SceneView> model = preview_.view()) content.views.push_back(*model);
   if (const std::optional<Loupe> l = loupe()) {
     engine::ImageView view;
     view.image = photo_;

@@ -20,6 +20,7 @@
 #include "editor/edit/document.h"
 #include "editor/edit/live_measurement.h"
 #include "editor/edit/overlay.h"
+#include "editor/edit/preview.h"
 
 namespace pw::edit {
 
@@ -41,6 +42,10 @@ struct SaveCopyEvent {
 struct TypeTextEvent {
   std::string text;
 };
+
+// `preview-wait`: the replay event that waits until the 3D preview shows the full
+// model of the corners as they are (tests capture it; a frame waits, so only there).
+struct PreviewWaitEvent {};
 
 class EditMode : public app::AppMode {
  public:
@@ -134,6 +139,9 @@ class EditMode : public app::AppMode {
   engine::ImageHandle photo_;
   glm::ivec2 windowSize_{0};
   double panelWidthPx_ = 0;
+  double panelHeightPx_ = 0;  // the side panel above the 3D preview's column
+  Preview preview_;           // the 3D preview pane (preview.h), under the panel
+  WindowRect previewToolbar_;
   Canvas canvas_;
   std::vector<WindowRect> uiRects_;  // ImGui windows over the canvas, as last drawn
 

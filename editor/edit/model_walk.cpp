@@ -12,8 +12,8 @@
 namespace pw::edit {
 
 Result<engine::Scene> buildCorridorScene(const metrology::Shot& shot, const cv::Mat& photo,
-                                         const metrology::Measurement& measurement) {
-  const modeling::ModelOptions options;
+                                         const metrology::Measurement& measurement,
+                                         const modeling::ModelOptions& options) {
   const std::string name = std::filesystem::path(shot.imagePath).stem().string();
   auto corridor = modeling::makeCorridorModel(name.empty() ? "corridor" : name, photo, measurement, false, options);
   if (!corridor) return corridor.error();

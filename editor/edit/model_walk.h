@@ -15,13 +15,16 @@
 #include "engine/scene/scene.h"
 #include "metrology/measure.h"
 #include "metrology/shot.h"
+#include "modeling/corridor_model.h"
 
 namespace pw::edit {
 
 // The one corridor of `shot` as a scene: modeling's corridor model (textures cut from
-// `photo`, BGR), placed at the origin as `build` places a first corridor.
+// `photo`, BGR), placed at the origin as `build` places a first corridor. `options`:
+// the texture budget (the preview's reduced model asks for less).
 Result<engine::Scene> buildCorridorScene(const metrology::Shot& shot, const cv::Mat& photo,
-                                         const metrology::Measurement& measurement);
+                                         const metrology::Measurement& measurement,
+                                         const modeling::ModelOptions& options = {});
 
 class ModelWalk : public app::AppMode {
  public:

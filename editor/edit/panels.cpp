@@ -36,6 +36,8 @@ const char* const kKeys =
     "Ctrl+S             save\n"
     "W                  walk through the model (Esc: back)\n"
     "B                  back to the building's plan (a layout open)\n"
+    "P                  show/hide the 3D preview\n"
+    "drag, wheel on it  orbit the preview; zoom it\n"
     "F1                 keys";
 
 void wrapped(const ImVec4& colour, const std::string& text) {
@@ -73,6 +75,7 @@ void EditMode::drawUi(app::Shell& shell) {
   if (doc_) drawCanvasOverlay();
   else drawEmptyHint(shell);
   drawPanel(shell);
+  preview_.drawUi(previewToolbar_);
   if (showKeys_) {
     ImGui::SetNextWindowPos({16, 40}, ImGuiCond_Appearing);
     ImGui::Begin("Keys", &showKeys_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
@@ -100,7 +103,7 @@ void EditMode::drawEmptyHint(app::Shell&) {
 
 void EditMode::drawPanel(app::Shell& shell) {
   ImGui::SetNextWindowPos({float(windowSize_.x - panelWidthPx_), 0.0f}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({float(panelWidthPx_), float(windowSize_.y)}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({float(panelWidthPx_), float(panelHeightPx_)}, ImGuiCond_Always);
   ImGui::Begin("photowalk edit", nullptr, kFixedWindow);
   uiRects_.push_back(currentWindowRect());
   if (!doc_) {
@@ -130,6 +133,11 @@ void EditMode::drawPanel(app::Shell& shell) {
   if (!planMode_.empty()) {
     ImGui::SameLine();
     if (ImGui::Button("Plan (B)")) shell.requestMode(planMode_);
+  }
+  bool preview = preview_.shown();
+  if (ImGui::Checkbox("3D preview (P)", &preview)) {
+    preview_.setShown(preview);
+    layOut(shell);
   }
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);

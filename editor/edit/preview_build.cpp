@@ -1,0 +1,165 @@
+#include "editor/edit/preview_build.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+#include "editor/edit/document.h"
+#include "editor/edit/model_walk.h"
+#include "metrology/measure.h"
+
+namespace pw::edit {
+
+cv::Mat reducePhoto(const cv::Mat& photo, int longestSidePx) {
+  const int side = std::max(photo.cols, photo.rows);
+  if (photo.empty() || side <= longestSidePx) return photo;
+  const double k = double(longestSidePx) / side;
+  cv::Mat reduced;
+  cv::resize(photo, reduced, cv::Size(std::max(1, int(std::lround(photo.cols * k))), std::max(1, int(std::lround(photo.rows * k)))),
+             0, 0, cv::INTER_AREA);
+  return reduced;
+}
+
+metrology::Shot scaledShot(const metrology::Shot& shot, glm::ivec2 size) {
+  if (shot.imageWidth == size.x && shot.imageHeight == size.y) return shot;
+  const glm::dvec2 k = glm::dvec2(size) / glm::dvec2(shot.imageWidth, shot.imageHeight);
+  const auto scale = [&](const glm::dvec2& p) { return (p + 0.5) * k - 0.5; };
+  metrology::Shot scaled = shot;
+  scaled.principalPointPx = scale(shot.principalPoint());
+  scaled.imageWidth = size.x;
+  scaled.imageHeight = size.y;
+  scaled.focalPx = shot.focalPx * k.x;
+  scaled.focalMm.reset();
+  for (glm::dvec2& corner : scaled.cornersPx) corner = scale(corner);
+  return scaled;
+}
+
+bool takesPlaceOf(const PreviewBuilder::Done& done, uint64_t openDocumentId, const std::optional<ShownBuild>& shown,
+                  const metrology::Shot& current) {
+  if (done.documentId != openDocumentId) return false;
+  const auto order = [](uint64_t request, PreviewResolution from) {
+    return 2 * request + (from == PreviewResolution::kFull ? 1 : 0);
+  };
+  if (shown && shown->documentId == openDocumentId && order(done.id, done.from) <= order(shown->request, shown->from)) {
+    return false;
+  }
+  return done.from == PreviewResolution::kReduced || sameShot(done.shot, current);
+}
+
+const char* resolutionName(PreviewResolution resolution) {
+  return resolution == PreviewResolution::kReduced ? "reduced" : "full";
+}
+
+modeling::ModelOptions previewModelOptions(PreviewResolution resolution) {
+  modeling::ModelOptions options;
+  if (resolution == PreviewResolution::kReduced) {
+    options.maxTextureSide = 1024;
+    options.maxTexturePixels = 0.08e6;
+  }
+  return options;
+}
+
+Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const metrology::Shot& shot,
+                                       const cv::Mat& photo, PreviewResolution resolution) {
+  const auto start = std::chrono::steady_clock::now();
+  const metrology::Shot inPhoto = scaledShot(shot, {photo.cols, photo.rows});
+  auto measurement = metrology::measureCorridor(inPhoto);
+  if (!measurement) return measurement.error();
+  auto scene = buildCorridorScene(inPhoto, photo, *measurement, previewModelOptions(resolution));
+  if (!scene) return scene.error();
+  if (scene->viewpoints.empty()) return makeError("the model has no Photo viewpoint");
+  const engine::Camera photoCamera = engine::cameraFromViewpoint(scene->viewpoints.front());
+  const engine::Bounds bounds = engine::sceneBounds(*scene);
+  auto staged = renderer.stageScene(*scene);
+  if (!staged) return staged.error();
+  PreviewModel model{std::move(*staged), photoCamera, bounds, {photo.cols, photo.rows}, 0.0};
+  model.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return model;
+}
+
+PreviewBuilder::PreviewBuilder(const engine::Renderer& renderer, int reducedSidePx)
+    : renderer_(renderer), reducedSidePx_(reducedSidePx), thread_([this] { run(); }) {}
+
+PreviewBuilder::~PreviewBuilder() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+void PreviewBuilder::request(Request request) {
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = std::move(request);
+  }
+  wake_.notify_one();
+}
+
+std::vector<PreviewBuilder::Done> PreviewBuilder::takeDone() {
+  std::lock_guard lock(mutex_);
+  std::vector<Done> done = std::move(done_);
+  done_.clear();
+  return done;
+}
+
+bool PreviewBuilder::busy() const {
+  std::lock_guard lock(mutex_);
+  return building_ || pending_.has_value();
+}
+
+const cv::Mat& PreviewBuilder::reducedFor(const Request& request) {
+  if (reducedDocument_ != request.documentId || reduced_.empty()) {
+    reduced_ = reducePhoto(request.photo, reducedSidePx_);
+    reducedDocument_ = request.documentId;
+  }
+  return reduced_;
+}
+
+void PreviewBuilder::run() {
+#ifdef __linux__
+  // Below the UI thread: on a machine with two cores, the frames come first and the
+  // model a little later. (Linux gives each thread its own nice value.)
+  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 5);
+#endif
+  for (;;) {
+    Request request;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
+      if (stop_) return;
+      request = std::move(*pending_);
+      pending_.reset();
+      building_ = true;
+    }
+    const auto finish = [&](PreviewResolution from, Result<PreviewModel> model) {
+      std::lock_guard lock(mutex_);
+      done_.push_back({request.id, request.documentId, request.shot, from, std::move(model)});
+    };
+    const cv::Mat& reduced = reducedFor(request);
+    bool stale = false;
+    if (request.reducedOnly || request.reducedFirst) {
+      finish(PreviewResolution::kReduced,
+             buildPreviewModel(renderer_, request.shot, reduced, PreviewResolution::kReduced));
+      std::lock_guard lock(mutex_);
+      stale = pending_.has_value() || stop_;  // a newer shot came meanwhile: build that instead
+    }
+    if (!request.reducedOnly && !stale) {
+      finish(PreviewResolution::kFull,
+             buildPreviewModel(renderer_, request.shot, request.photo, PreviewResolution::kFull));
+    }
+    std::lock_guard lock(mutex_);
+    building_ = false;
+  }
+}
+
+}  // namespace pw::edit
