@@ -23,13 +23,28 @@ Result<engine::Camera> shotCamera(const std::filesystem::path& path) {
 
 Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions) {
-  BuiltModel model;
-  model.layout = layout;
-  std::vector<metrology::Dimensions> boxes;
+  std::vector<MeasuredShot> shots;
   for (const modeling::LayoutEntry& entry : layout.corridors) {
     auto measured = measureShotFile(entry.shot, measureOptions);
     if (!measured) return measured.error();
-    auto corridor = modeling::makeCorridorModel(entry.name, measured->loaded.image, measured->measurement,
+    shots.push_back(std::move(*measured));
+  }
+  return buildMeasuredModel(layout, shots, options);
+}
+
+Result<BuiltModel> buildMeasuredModel(const Layout& layout, const std::vector<MeasuredShot>& shots,
+                                      const ModelOptions& options) {
+  if (shots.size() != layout.corridors.size() || shots.empty()) {
+    return makeError("the model needs one measured shot per corridor (" + std::to_string(layout.corridors.size()) +
+                     " corridors, " + std::to_string(shots.size()) + " shots)");
+  }
+  BuiltModel model;
+  model.layout = layout;
+  std::vector<metrology::Dimensions> boxes;
+  for (size_t i = 0; i < layout.corridors.size(); ++i) {
+    const modeling::LayoutEntry& entry = layout.corridors[i];
+    const MeasuredShot& measured = shots[i];
+    auto corridor = modeling::makeCorridorModel(entry.name, measured.loaded.image, measured.measurement,
                                                 entry.attach.has_value(), options);
     if (!corridor) return corridor.error();
     boxes.push_back(corridor->box);

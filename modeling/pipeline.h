@@ -39,4 +39,10 @@ struct BuiltModel {
 Result<BuiltModel> buildModel(const Layout& layout, const ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions = {});
 
+// What buildModel does once every corridor is read and measured: `shots[i]` is the
+// shot of layout.corridors[i] (the editor's export passes the shot it holds, saved or
+// not). Errors: a count that does not match, and buildModel's.
+Result<BuiltModel> buildMeasuredModel(const Layout& layout, const std::vector<MeasuredShot>& shots,
+                                      const ModelOptions& options);
+
 }  // namespace pw::modeling
