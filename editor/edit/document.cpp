@@ -88,6 +88,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.photo_ = std::move(loaded->image);
     doc.otherFields_ = std::move(loaded->otherFields);
     doc.saved_ = doc.shot_;
+    doc.opened_ = doc.shot_;
     return doc;
   }
 
@@ -130,6 +131,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
                          " px (a 28 mm-equivalent lens): set it in the Camera panel");
   }
   doc.notes_.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it in the Camera panel");
+  doc.opened_ = doc.shot_;
   return doc;
 }
 
@@ -166,6 +168,13 @@ bool Document::redo() {
 
 Status Document::save() {
   PW_TRY(modeling::writeShotFile(path_, shot_, otherFields_));
+  saved_ = shot_;
+  return {};
+}
+
+Status Document::saveAs(const fs::path& path) {
+  PW_TRY(modeling::writeShotFile(path, shot_, otherFields_));
+  path_ = path;
   saved_ = shot_;
   return {};
 }

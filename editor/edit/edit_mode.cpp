@@ -31,16 +31,20 @@ ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y});
 
 }  // namespace
 
-EditMode::EditMode(EditModeOptions options, ModelWalk& walk) : options_(std::move(options)), walk_(walk) {}
+EditMode::EditMode(EditModeOptions options, ModelWalk& walk) : options_(std::move(options)), walk_(walk) {
+  files_.recent = RecentFiles::load(options_.recentFilesPath.value_or(defaultRecentFilesPath()));
+}
 
 std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
-  return {{"save-copy", [scriptDir](std::istream& words) -> Result<std::any> {
+  std::vector<app::ReplayVerb> verbs = {{"save-copy", [scriptDir](std::istream& words) -> Result<std::any> {
              std::string file;
              if (!(words >> file)) return makeError("expected 'save-copy FILE.json'");
              fs::path path(file);
              if (path.is_relative()) path = scriptDir / path;
              return std::any(SaveCopyEvent{path});
            }}};
+  for (app::ReplayVerb& verb : filesReplayVerbs(scriptDir)) verbs.push_back(std::move(verb));
+  return verbs;
 }
 
 Status EditMode::open(app::Shell& shell) {
@@ -65,6 +69,7 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
   if (photo_) (void)shell.renderer().removeImage(photo_);
   photo_ = *uploaded;
   openError_.clear();
+  leaveDocument();
   doc_ = std::move(*doc);
   for (const std::string& note : doc_->notes()) shell.showMessage("note: " + note);
   canvas_ = Canvas();  // fits the new photo
@@ -72,9 +77,9 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
   drag_.reset();
   panFrom_.reset();
   measuredShot_.reset();
-  discardOnDrop_.reset();
   layOut(shell);
   remeasure();
+  afterOpen(shell, path);
 }
 
 void EditMode::layOut(app::Shell& shell) {
@@ -91,15 +96,16 @@ void EditMode::onEnter(app::Shell& shell) {
   layOut(shell);
 }
 
-void EditMode::onLeave(app::Shell&) {
+void EditMode::onLeave(app::Shell& shell) {
   // Nothing stays held while another mode runs: a drag ends where it was.
   if (drag_) endDrag(true);
+  updateFiles(shell, Autosave::kIntervalS);  // autosave now: the editor is not updated while away
   panFrom_.reset();
   keys_.fill(false);
 }
 
 bool EditMode::overCanvas(const glm::dvec2& p) const {
-  if (!canvas_.area().contains(p)) return false;
+  if (!canvas_.area().contains(p) || dialogOpen()) return false;
   return std::none_of(uiRects_.begin(), uiRects_.end(), [&](const WindowRect& r) { return r.contains(p); });
 }
 
@@ -119,6 +125,7 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
   if (e.key < 0 || e.key > GLFW_KEY_LAST) return;
   keys_[e.key] = e.down;
   if (!e.down) return;
+  if (onFilesKey(shell, e)) return;  // a dialog's keys; Ctrl+O, Ctrl+Shift+S
   if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;  // typing into a panel's field
   const bool ctrl = ctrlHeld() || (e.mods & GLFW_MOD_CONTROL);
   const bool shift = shiftHeld() || (e.mods & GLFW_MOD_SHIFT);
@@ -204,15 +211,7 @@ void EditMode::onCursor(const glm::dvec2& p) {
 
 void EditMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
   if (e.paths.empty()) return;
-  const fs::path& path = e.paths.front();
-  if (doc_ && doc_->dirty() && discardOnDrop_ != path) {
-    discardOnDrop_ = path;
-    shell.showMessage("unsaved changes in " + doc_->path().string() + ": Ctrl+S saves them; drop " +
-                      path.filename().string() + " again to open it and discard them");
-    return;
-  }
-  if (drag_) endDrag(true);
-  openFile(shell, path);
+  requestOpen(shell, e.paths.front());  // asks first when unsaved edits would be lost
 }
 
 void EditMode::select(int corner) { selected_ = (corner >= 0 && corner < kCornerCount) ? corner : -1; }
@@ -262,6 +261,7 @@ void EditMode::save(app::Shell& shell) {
     return;
   }
   shell.showMessage("saved " + doc_->path().string());
+  afterSave(shell);
 }
 
 void EditMode::walk(app::Shell& shell) {
@@ -280,6 +280,7 @@ void EditMode::walk(app::Shell& shell) {
 }
 
 Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
+  if (onFilesReplayEvent(shell, event)) return {};
   const auto* copy = std::any_cast<SaveCopyEvent>(&event.value);
   if (!copy) return AppMode::onReplayEvent(shell, event);
   if (!doc_) return makeError("save-copy: no file is open");
@@ -297,9 +298,10 @@ void EditMode::remeasure() {
   live_ = measureLive(*measuredShot_);
 }
 
-void EditMode::update(app::Shell& shell, double) {
+void EditMode::update(app::Shell& shell, double stepS) {
   layOut(shell);
   remeasure();
+  updateFiles(shell, stepS);
   ++step_;
 }
 
@@ -339,6 +341,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
     row.add("measurement", ordered_json(nullptr));
   }
   addDocumentTrace(row);
+  traceFiles(row);
   if (const std::optional<Loupe> l = loupe()) {
     const glm::dvec2 size = l->rect.size();
     row.add("loupe", ordered_json{{"corner", metrology::cornerName(l->corner)},

@@ -34,6 +34,8 @@ const char* const kKeys =
     "Ctrl+Z             undo\n"
     "Ctrl+Shift+Z, Ctrl+Y  redo\n"
     "Ctrl+S             save\n"
+    "Ctrl+Shift+S       save as (the file browser)\n"
+    "Ctrl+O             open a photo or shot file\n"
     "W                  walk through the model (Esc: back)\n"
     "F1                 keys";
 
@@ -72,6 +74,7 @@ void EditMode::drawUi(app::Shell& shell) {
   if (doc_) drawCanvasOverlay();
   else drawEmptyHint(shell);
   drawPanel(shell);
+  drawFiles(shell);
   if (showKeys_) {
     ImGui::SetNextWindowPos({16, 40}, ImGuiCond_Appearing);
     ImGui::Begin("Keys", &showKeys_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
@@ -81,7 +84,7 @@ void EditMode::drawUi(app::Shell& shell) {
   }
 }
 
-void EditMode::drawEmptyHint(app::Shell&) {
+void EditMode::drawEmptyHint(app::Shell& shell) {
   const glm::dvec2 centre = canvas_.area().centre();
   ImGui::SetNextWindowPos({float(centre.x), float(centre.y)}, ImGuiCond_Always, {0.5f, 0.5f});
   ImGui::SetNextWindowSizeConstraints({0, 0}, {float(canvas_.area().size().x - 20), 1e6f});
@@ -89,9 +92,7 @@ void EditMode::drawEmptyHint(app::Shell&) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::TextUnformatted("No photo open.");
-  ImGui::TextUnformatted("Open one from the command line:");
-  ImGui::TextUnformatted("  photowalk edit PHOTO.jpg | SHOT.json");
-  ImGui::TextUnformatted("or drop a photo or a shot file on this window.");
+  drawOpenChoices(shell);
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   uiRects_.push_back(currentWindowRect());
   ImGui::End();
@@ -126,6 +127,7 @@ void EditMode::drawPanel(app::Shell& shell) {
   ImGui::BeginDisabled(!live_.measurement);
   if (ImGui::Button("Walk (W)")) walk(shell);
   ImGui::EndDisabled();
+  drawFileButtons(shell);
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
   drawMeasurement();
