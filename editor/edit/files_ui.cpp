@@ -478,7 +478,9 @@ void EditMode::drawBrowser(app::Shell& shell) {
   }
   std::error_code ec;
   const std::string name(files_.name.data());
-  const bool replaces = !open && !name.empty() && fs::exists(browser.folder() / name, ec);
+  const fs::path target = browser.folder() / name;
+  const bool ownFile = doc_ && fs::equivalent(target, doc_->path(), ec);  // Save As onto itself: a Save
+  const bool replaces = !open && !name.empty() && !ownFile && fs::exists(target, ec);
   const char* confirm = open ? "Open" : replaces ? "Replace" : files_.purpose == BrowserPurpose::kSaveAs ? "Save" : "Export";
   bool confirmed = recordedButton(confirm, "Confirm");
   ImGui::SameLine();

@@ -80,6 +80,7 @@ class EditFiles : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = fs::path(PW_BINARY_DIR) / "test-output" / "edit_files_window";
     fs::remove_all(dir_);
+    fs::remove(dir_.parent_path() / "edit_files_window_recent.json");
     fs::create_directories(dir_);
     const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_b");
     fs::copy_file(truth.image, dir_ / "corridor_b.png");
@@ -88,7 +89,8 @@ class EditFiles : public ::testing::Test {
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (run under xvfb-run)";
     setenv("PW_VALIDATION", "1", 1);
-    setenv("PW_RECENT_FILES", (dir_ / "recent.json").c_str(), 1);  // never the real home's list
+    // Never the real home's list (and not in the folder the browser shows).
+    setenv("PW_RECENT_FILES", (dir_.parent_path() / "edit_files_window_recent.json").c_str(), 1);
   }
 
   static std::string arguments(const std::string& file, const fs::path& script, const fs::path& trace) {
@@ -243,10 +245,15 @@ TEST_F(EditFiles, SaveAsThenReopenGivesTheSameCorners) {
   ASSERT_FALSE(first.empty());
   fs::create_directories(dir_ / "saved");
   fs::remove(dir_ / "saved" / "moved.json");
+  // Ctrl+Shift+S shows the browser (captured: the README's picture), Esc leaves it; the
+  // replay's save-as then does what its Save does.
   Script script = dragP5(first);
-  script.at(20, "save-as saved/moved.json").at(30, "quit");
+  script.ctrlKey(14, "S", true).at(17, "capture save_as.png").key(18, "ESCAPE").at(20, "save-as saved/moved.json").at(30, "quit");
   const std::vector<Row> rows = edit("save_as", shot.string(), script.str());
   ASSERT_GE(rows.size(), 30u);
+  EXPECT_EQ(dialogOf(rows[16]), "save-as");
+  EXPECT_EQ(fs::path(rows[16].raw["files"]["folder"].get<std::string>()), dir_);
+  EXPECT_EQ(dialogOf(rows[19]), "");
   const std::vector<glm::dvec2> edited = rows[15].corners;
   EXPECT_TRUE(rows[15].dirty);
   ASSERT_TRUE(rows[25].path.has_value());
