@@ -5,6 +5,7 @@
 
 #include <array>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <optional>
 #include <string>
@@ -47,6 +48,14 @@ struct EditFiles {
   // A crash's state found beside the file just opened: the Recover / Discard question.
   std::optional<metrology::Shot> recovered;
   bool closing = false;  // the window goes: nothing more is autosaved
+
+  // An export being written off the UI thread (a model's textures take seconds to cut
+  // and encode): its file and its outcome.
+  struct Export {
+    std::filesystem::path path;
+    std::future<Status> done;
+  };
+  std::optional<Export> exporting;
 
   // The dialog's buttons and entries as last drawn, by name (the trace's, for tests
   // to click).

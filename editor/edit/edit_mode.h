@@ -104,7 +104,8 @@ class EditMode : public app::AppMode {
   void openBrowser(app::Shell& shell, BrowserPurpose purpose);
   void confirmBrowser(app::Shell& shell, const std::optional<std::filesystem::path>& chosen = std::nullopt);
   void saveAs(app::Shell& shell, const std::filesystem::path& path);
-  void exportTo(app::Shell& shell, const std::filesystem::path& path);
+  void exportTo(app::Shell& shell, const std::filesystem::path& path);  // off the UI thread
+  void finishExport(app::Shell& shell, bool wait);  // says how it went, once it is done
   void answerUnsaved(app::Shell& shell, int answer);  // 0 save, 1 discard, 2 cancel
   void answerRecovery(app::Shell& shell, bool recover);
   bool onFilesKey(app::Shell& shell, const app::KeyEvent& event);  // true: taken

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 
 #include <nlohmann/json.hpp>
@@ -297,7 +298,29 @@ void EditMode::exportTo(app::Shell& shell, const fs::path& path) {
     shell.showMessage("error: not exported: the corners cannot be measured: " + live_.error);
     return;
   }
-  if (Status written = exportModel(doc_->shot(), doc_->photo(), *live_.measurement, path); !written) {
+  if (files_.exporting) {
+    shell.showMessage("error: not exported: " + files_.exporting->path.filename().string() +
+                      " is being exported; try again when it is done");
+    return;
+  }
+  // The export works on copies (the photo is never written to, so sharing its pixels is
+  // safe). A replay waits for it in the frame's step (updateFiles), so that the next
+  // frame sees the files whatever the machine's speed.
+  files_.exporting = EditFiles::Export{
+      path, std::async(std::launch::async, [shot = doc_->shot(), photo = doc_->photo(), m = *live_.measurement, path] {
+        return exportModel(shot, photo, m, path);
+      })};
+  shell.showMessage("exporting " + path.string() + " ...");
+}
+
+void EditMode::finishExport(app::Shell& shell, bool wait) {
+  if (!files_.exporting) return;
+  std::future<Status>& done = files_.exporting->done;
+  if (!wait && done.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  const fs::path path = files_.exporting->path;
+  const Status written = done.get();
+  files_.exporting.reset();
+  if (!written) {
     shell.showMessage("error: not exported: " + written.message());
     return;
   }
@@ -336,6 +359,7 @@ bool EditMode::onFilesKey(app::Shell& shell, const app::KeyEvent& e) {
 }
 
 void EditMode::updateFiles(app::Shell& shell, double stepS) {
+  finishExport(shell, shell.replaying());
   // No autosave while the recovery question is up: the side file is what it asks about.
   if (files_.recovered || files_.closing) return;
   if (Status saved = files_.autosave.step(doc_ ? &*doc_ : nullptr, stepS); !saved) {
@@ -517,11 +541,15 @@ void EditMode::drawFileButtons(app::Shell& shell) {
   if (ImGui::Button("Open...")) openBrowser(shell, BrowserPurpose::kOpen);
   ImGui::SameLine();
   if (ImGui::Button("Save As...")) openBrowser(shell, BrowserPurpose::kSaveAs);
-  ImGui::BeginDisabled(!live_.measurement);
+  ImGui::BeginDisabled(!live_.measurement || files_.exporting.has_value());
   if (ImGui::Button("Export .wrl")) openBrowser(shell, BrowserPurpose::kExportVrml);
   ImGui::SameLine();
   if (ImGui::Button("Export .glb")) openBrowser(shell, BrowserPurpose::kExportGltf);
   ImGui::EndDisabled();
+  if (files_.exporting) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("exporting %s...", files_.exporting->path.filename().string().c_str());
+  }
 }
 
 }  // namespace pw::edit
