@@ -127,6 +127,11 @@ bool EditMode::onFilesReplayEvent(app::Shell& shell, const app::ModeEvent& event
 
 void EditMode::requestOpen(app::Shell& shell, const fs::path& path) {
   if (drag_) endDrag(true);
+  if (files_.recovered && doc_) {  // its answer decides what becomes of the side file
+    shell.showMessage("first answer the question about " + doc_->path().filename().string() +
+                      "'s unsaved changes (Recover or Discard)");
+    return;
+  }
   if (doc_ && doc_->hasUnsavedEdits()) {
     files_.browser.reset();
     files_.unsaved = EditFiles::Unsaved{path};
@@ -140,7 +145,8 @@ void EditMode::requestOpen(app::Shell& shell, const fs::path& path) {
 }
 
 void EditMode::leaveDocument() {
-  if (doc_ && !doc_->hasUnsavedEdits()) files_.autosave.remove(doc_->path());
+  // A side file goes with a clean document, unless it is a crash's state still unanswered.
+  if (doc_ && !doc_->hasUnsavedEdits() && !files_.recovered) files_.autosave.remove(doc_->path());
   files_.autosave.reset();
   files_.recovered.reset();
 }

@@ -238,6 +238,24 @@ TEST_F(EditFiles, DiscardingTheRecoveredChangesRemovesTheSideFile) {
   EXPECT_FALSE(fs::exists(dir_ / ".discarded.json.autosave"));
 }
 
+TEST_F(EditFiles, NothingElseOpensWhileTheRecoveryQuestionIsUnansweredAndClosingKeepsTheSideFile) {
+  const fs::path shot = shotCopy("unanswered"), other = shotCopy("unanswered_other");
+  nlohmann::json side = nlohmann::json::parse(bytesOf(shot));
+  side["corners_px"]["P6"][1] = double(side["corners_px"]["P6"][1]) - 4.0;
+  const fs::path sidePath = dir_ / ".unanswered.json.autosave";
+  std::ofstream(sidePath) << side.dump();
+  std::string output;
+  const std::vector<Row> rows =
+      edit("unanswered", shot.string(), Script().at(10, "drop " + other.string()).at(20, "close").at(300, "quit").str(),
+           &output);
+  ASSERT_GE(rows.size(), 20u);
+  EXPECT_EQ(fs::path(rows[15].path.value_or("")), shot);
+  EXPECT_EQ(dialogOf(rows[15]), "recover");
+  EXPECT_NE(output.find("first answer the question"), std::string::npos) << output;
+  EXPECT_LT(rows.back().frame, 25);  // the file is clean: the window closes, asking nothing more
+  EXPECT_TRUE(fs::exists(sidePath)) << "the unanswered side file is offered again next time";
+}
+
 TEST_F(EditFiles, SaveAsThenReopenGivesTheSameCorners) {
   const fs::path shot = shotCopy("save_as");
   const std::string before = bytesOf(shot);
