@@ -60,6 +60,7 @@ struct EditFiles {
   // The dialog's buttons and entries as last drawn, by name (the trace's, for tests
   // to click).
   std::map<std::string, WindowRect> buttons;
+  int buttonsFrame = -1;  // the ImGui frame they are of
 };
 
 }  // namespace pw::edit

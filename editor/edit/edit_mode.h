@@ -119,6 +119,7 @@ class EditMode : public app::AppMode {
   void drawOpenChoices(app::Shell& shell);  // the empty window's: open, recent files
   void drawFileButtons(app::Shell& shell);  // the panel's: Open, Save As, Export
   bool recordedButton(const char* label, const std::string& name);
+  void recordItem(const std::string& name);  // the last item's rectangle, for the trace
 
   // panels.cpp: the side panel (document, measurement, warnings, camera, corners, keys).
   void drawPanel(app::Shell& shell);

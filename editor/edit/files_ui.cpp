@@ -397,15 +397,23 @@ void EditMode::traceFiles(app::TraceRow& row) const {
   row.add("files", files);
 }
 
-bool EditMode::recordedButton(const char* label, const std::string& name) {
-  const bool pressed = ImGui::Button(label);
+void EditMode::recordItem(const std::string& name) {
+  if (files_.buttonsFrame != ImGui::GetFrameCount()) {  // the first of this frame: the last frame's go
+    files_.buttons.clear();
+    files_.buttonsFrame = ImGui::GetFrameCount();
+  }
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   files_.buttons[name] = {{min.x, min.y}, {max.x, max.y}};
+}
+
+bool EditMode::recordedButton(const char* label, const std::string& name) {
+  const bool pressed = ImGui::Button(label);
+  recordItem(name);
   return pressed;
 }
 
 void EditMode::drawFiles(app::Shell& shell) {
-  files_.buttons.clear();
+  if (files_.buttonsFrame != ImGui::GetFrameCount()) files_.buttons.clear();
   drawRecovery(shell);
   drawUnsaved(shell);
   drawBrowser(shell);
@@ -483,8 +491,7 @@ void EditMode::drawBrowser(app::Shell& shell) {
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) chosen = entry.path;
       }
     }
-    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    files_.buttons["entry:" + label] = {{min.x, min.y}, {max.x, max.y}};
+    recordItem("entry:" + label);
   }
   if (browser.entries().empty()) ImGui::TextDisabled("(nothing here to show)");
   ImGui::EndChild();
@@ -493,8 +500,7 @@ void EditMode::drawBrowser(app::Shell& shell) {
     ImGui::BeginChild("##recent", {0, listHeight * 0.38f - ImGui::GetTextLineHeightWithSpacing()}, true);
     for (const fs::path& path : files_.recent.paths()) {
       if (ImGui::Selectable(path.string().c_str())) chosen = path;
-      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      files_.buttons["recent:" + path.string()] = {{min.x, min.y}, {max.x, max.y}};
+      recordItem("recent:" + path.string());
     }
     ImGui::EndChild();
   }
@@ -531,13 +537,18 @@ void EditMode::drawBrowser(app::Shell& shell) {
 }
 
 void EditMode::drawOpenChoices(app::Shell& shell) {
-  if (ImGui::Button("Open a file... (Ctrl+O)")) openBrowser(shell, BrowserPurpose::kOpen);
+  if (recordedButton("Open a file... (Ctrl+O)", "Open")) openBrowser(shell, BrowserPurpose::kOpen);
   if (!files_.recent.paths().empty()) {
+    ImGui::Spacing();
     ImGui::TextUnformatted("Recent files:");
+    std::optional<fs::path> chosen;
     for (const fs::path& path : files_.recent.paths()) {
-      if (ImGui::Selectable(path.string().c_str())) requestOpen(shell, path);
+      if (ImGui::Selectable(path.string().c_str())) chosen = path;
+      recordItem("recent:" + path.string());
     }
+    if (chosen) requestOpen(shell, *chosen);  // after the loop: opening changes the list
   }
+  ImGui::Spacing();
   ImGui::TextUnformatted("Or drop a photo or a shot file on this window,");
   ImGui::TextUnformatted("or give one on the command line:");
   ImGui::TextUnformatted("  photowalk edit PHOTO.jpg | SHOT.json");

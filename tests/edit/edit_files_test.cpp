@@ -380,6 +380,26 @@ TEST_F(EditFiles, DroppingAnotherFileWithUnsavedChangesAsksFirst) {
   EXPECT_FALSE(rows[55].dirty);
 }
 
+TEST_F(EditFiles, TheEmptyWindowOffersTheRecentFilesAndOpensOneClicked) {
+  const fs::path recentList = dir_ / "recent_empty" / "recent.json";  // made by the first open
+  fs::remove_all(recentList.parent_path());
+  setenv("PW_RECENT_FILES", recentList.c_str(), 1);
+  const fs::path shot = shotCopy("recent_one");
+  edit("recent_open", shot.string(), "1 quit\n");
+  ASSERT_TRUE(fs::exists(recentList));
+  const std::vector<Row> empty = edit("recent_empty", "", "2 capture recent_empty.png\n3 quit\n");
+  ASSERT_GE(empty.size(), 3u);
+  EXPECT_TRUE(empty[2].corners.empty());
+  const nlohmann::json buttons = empty[2].raw["files"]["buttons"];
+  ASSERT_TRUE(buttons.contains("recent:" + shot.string())) << buttons.dump();
+  ASSERT_TRUE(buttons.contains("Open"));
+  const std::vector<Row> rows =
+      edit("recent_click", "", Script().click(3, buttons["recent:" + shot.string()]).at(10, "quit").str());
+  ASSERT_GE(rows.size(), 10u);
+  EXPECT_EQ(fs::path(rows[8].path.value_or("")), shot);
+  EXPECT_EQ(rows[8].corners.size(), 8u);
+}
+
 TEST_F(EditFiles, TheBrowserListsAndFiltersAFolderAndOpensWhatIsClicked) {
   const fs::path folder = dir_ / "browse";
   fs::remove_all(folder);
