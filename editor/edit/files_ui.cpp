@@ -239,7 +239,8 @@ void EditMode::openBrowser(app::Shell& shell, BrowserPurpose purpose) {
   files_.browserError.clear();
   std::string name;
   if (doc_) {
-    const std::string stem = doc_->path().stem().string();
+    std::string stem = doc_->path().stem().string();  // "hall" of hall.json and of hall.shot.json
+    if (stem.size() > 5 && stem.ends_with(".shot")) stem.resize(stem.size() - 5);
     if (purpose == BrowserPurpose::kSaveAs) name = doc_->path().filename().string();
     if (purpose == BrowserPurpose::kExportVrml) name = stem + ".wrl";
     if (purpose == BrowserPurpose::kExportGltf) name = stem + ".glb";
@@ -388,6 +389,7 @@ void EditMode::traceFiles(app::TraceRow& row) const {
     ordered_json entries = ordered_json::array();
     for (const FolderEntry& entry : files_.browser->entries()) entries.push_back(entry.name + (entry.folder ? "/" : ""));
     files["entries"] = entries;
+    files["name"] = std::string(files_.name.data());
   }
   ordered_json recent = ordered_json::array();
   for (const fs::path& path : files_.recent.paths()) recent.push_back(path.string());
@@ -559,9 +561,9 @@ void EditMode::drawFileButtons(app::Shell& shell) {
   ImGui::SameLine();
   if (ImGui::Button("Save As...")) openBrowser(shell, BrowserPurpose::kSaveAs);
   ImGui::BeginDisabled(!live_.measurement || files_.exporting.has_value());
-  if (ImGui::Button("Export .wrl")) openBrowser(shell, BrowserPurpose::kExportVrml);
+  if (recordedButton("Export .wrl", "Export .wrl")) openBrowser(shell, BrowserPurpose::kExportVrml);
   ImGui::SameLine();
-  if (ImGui::Button("Export .glb")) openBrowser(shell, BrowserPurpose::kExportGltf);
+  if (recordedButton("Export .glb", "Export .glb")) openBrowser(shell, BrowserPurpose::kExportGltf);
   ImGui::EndDisabled();
   if (files_.exporting) {
     ImGui::SameLine();

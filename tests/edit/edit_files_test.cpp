@@ -271,6 +271,7 @@ TEST_F(EditFiles, SaveAsThenReopenGivesTheSameCorners) {
   ASSERT_GE(rows.size(), 30u);
   EXPECT_EQ(dialogOf(rows[16]), "save-as");
   EXPECT_EQ(fs::path(rows[16].raw["files"]["folder"].get<std::string>()), dir_);
+  EXPECT_EQ(rows[16].raw["files"]["name"], "save_as.json");  // the file name field, filled in
   EXPECT_EQ(dialogOf(rows[19]), "");
   const std::vector<glm::dvec2> edited = rows[15].corners;
   EXPECT_TRUE(rows[15].dirty);
@@ -311,6 +312,26 @@ TEST_F(EditFiles, ExportWritesVrmlAndGltfThatPhotowalkReadsAndAFailureIsAMessage
   // The convert command reads them too.
   const CommandRun convert = photowalk("convert " + (dir_ / "exported.glb").string() + " " + (dir_ / "back.wrl").string());
   EXPECT_EQ(convert.exitCode, 0) << convert.output;
+}
+
+TEST_F(EditFiles, ThePanelsExportButtonOffersTheModelsNameAndEnterWritesIt) {
+  // A photo opened alone: its shot would be corridor_b.shot.json; the model corridor_b.wrl.
+  fs::remove(dir_ / "corridor_b.wrl");
+  // (The panel settles in its second frame: its wrapped notes are measured in the first.)
+  const std::vector<Row> first = edit("export_button_ask", (dir_ / "corridor_b.png").string(), "6 quit\n");
+  ASSERT_GE(first.size(), 6u);
+  const nlohmann::json button = first[5].raw["files"]["buttons"]["Export .wrl"];
+  ASSERT_EQ(button.size(), 4u) << first[5].raw["files"].dump();
+  const std::vector<Row> rows = edit("export_button", (dir_ / "corridor_b.png").string(),
+                                     Script().click(3, button).key(10, "ENTER").at(14, "quit").str());
+  ASSERT_GE(rows.size(), 14u);
+  EXPECT_EQ(dialogOf(rows[8]), "export");
+  EXPECT_EQ(rows[8].raw["files"]["name"], "corridor_b.wrl");
+  EXPECT_EQ(dialogOf(rows[12]), "");
+  std::vector<std::string> warnings;
+  auto scene = engine::loadModel(dir_ / "corridor_b.wrl", &warnings);
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  EXPECT_GE(scene->shapes.size(), 5u);
 }
 
 TEST_F(EditFiles, ClosingWithUnsavedChangesAsksAndKeepsTheWindowUntilAnswered) {
