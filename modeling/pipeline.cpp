@@ -32,18 +32,19 @@ Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::Mo
   return buildModel(layout, shots, options);
 }
 
-Result<BuiltModel> buildModel(const modeling::Layout& layout, const std::vector<MeasuredShot>& shots,
-                              const modeling::ModelOptions& options) {
-  if (shots.empty() || shots.size() != layout.corridors.size()) {
-    return makeError("a building needs one measured shot per corridor, and at least one");
+Result<BuiltModel> buildModel(const Layout& layout, const std::vector<MeasuredShot>& shots,
+                                      const ModelOptions& options) {
+  if (shots.size() != layout.corridors.size() || shots.empty()) {
+    return makeError("the model needs one measured shot per corridor (" + std::to_string(layout.corridors.size()) +
+                     " corridors, " + std::to_string(shots.size()) + " shots)");
   }
   BuiltModel model;
   model.layout = layout;
   std::vector<metrology::Dimensions> boxes;
-  for (size_t i = 0; i < shots.size(); ++i) {
+  for (size_t i = 0; i < layout.corridors.size(); ++i) {
     const modeling::LayoutEntry& entry = layout.corridors[i];
-    const MeasuredShot* measured = &shots[i];
-    auto corridor = modeling::makeCorridorModel(entry.name, measured->loaded.image, measured->measurement,
+    const MeasuredShot& measured = shots[i];
+    auto corridor = modeling::makeCorridorModel(entry.name, measured.loaded.image, measured.measurement,
                                                 entry.attach.has_value(), options);
     if (!corridor) return corridor.error();
     boxes.push_back(corridor->box);

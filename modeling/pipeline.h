@@ -39,7 +39,8 @@ struct BuiltModel {
 Result<BuiltModel> buildModel(const Layout& layout, const ModelOptions& options,
                               const metrology::MeasureOptions& measureOptions = {});
 // The same from shots already measured, one per corridor of the layout, in its order
-// (the editor's shots as they are, saved or not).
+// (the editor's shots as they are, saved or not: its export, its building's walk).
+// Errors: a count that does not match, and the first buildModel's.
 Result<BuiltModel> buildModel(const Layout& layout, const std::vector<MeasuredShot>& shots,
                               const ModelOptions& options);
 

@@ -54,10 +54,20 @@ class AppMode {
     return makeError("replay: mode '" + std::string(name()) + "' has no event '" + event.verb + "'");
   }
 
+  // The window's close button (or a replay's `close`): true (the default) lets the window
+  // close; false keeps it open while the mode asks the person (unsaved changes: Save /
+  // Discard / Cancel), and the mode calls Shell::requestQuit() once they agree. The
+  // shell asks every mode, the active one first; the first that asks becomes active.
+  virtual bool onCloseRequest(Shell&) { return true; }
+
   // One simulation step of `stepS` seconds (FixedStepClock::kStepS).
   virtual void update(Shell& shell, double stepS) = 0;
   // The fields of the trace row written after each step (the shell adds the frame).
   virtual void traceRow(TraceRow&) const {}
+
+  // The shell's messages (Shell::showMessage) stay left of this window x (0: the whole
+  // width), so that they do not cover a mode's panel.
+  virtual double messagesMaxX() const { return 0; }
 
   // ImGui windows, between ImGui::NewFrame and ImGui::Render.
   virtual void drawUi(Shell&) {}

@@ -14,7 +14,7 @@
 namespace pw::app {
 namespace {
 
-constexpr const char* kShellVerbs = "key, mouse, mousemove, wheel, drop, resize, capture, mode, quit";
+constexpr const char* kShellVerbs = "key, mouse, mousemove, wheel, drop, resize, capture, mode, quit, close";
 
 std::filesystem::path besideScript(const std::string& file, const std::filesystem::path& baseDir) {
   const std::filesystem::path p(file);
@@ -89,6 +89,7 @@ Result<ReplayAction> parseAction(const std::string& what, std::istream& words, c
     return ReplayAction(mode);
   }
   if (what == "quit") return ReplayAction(QuitRequest{});
+  if (what == "close") return ReplayAction(CloseRequest{});
   for (const ReplayVerb& verb : modeVerbs) {
     if (what != verb.verb) continue;
     auto value = verb.parse(words);

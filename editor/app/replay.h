@@ -13,7 +13,8 @@
 //   95 resize 800 600      resize the window
 //  100 capture out.png     save the frame of this frame (relative to the script)
 //  110 mode walk           switch to the named mode
-//  120 quit
+//  120 quit               end the run at once, asking nothing (as a crash would)
+//  120 close              the window's close button (a mode may ask first: unsaved changes)
 // A mode adds its own events (ReplayVerb): the walk's `viewpoint N`.
 #pragma once
 
@@ -41,7 +42,8 @@ struct CaptureRequest {
 struct ModeRequest {
   std::string mode;
 };
-struct QuitRequest {};
+struct QuitRequest {};   // ends the run at once, asking nothing (as a crash would)
+struct CloseRequest {};  // the window's close button: the modes may ask first
 
 // An event of a mode's own kind: `verb` and what the verb's parser made of its words
 // (the mode reads it back with std::any_cast to the type its parser returned).
@@ -51,7 +53,7 @@ struct ModeEvent {
 };
 
 using ReplayAction = std::variant<KeyEvent, MouseButtonEvent, CursorEvent, PointerMotionEvent, ScrollEvent, DropEvent,
-                                  ResizeRequest, CaptureRequest, ModeRequest, QuitRequest, ModeEvent>;
+                                  ResizeRequest, CaptureRequest, ModeRequest, QuitRequest, ModeEvent, CloseRequest>;
 
 struct ReplayEvent {
   int frame = 0;

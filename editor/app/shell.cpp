@@ -109,6 +109,17 @@ void Shell::dispatch(InputEvent event) {
   active_->onInput(*this, event);
 }
 
+void Shell::requestClose() {
+  std::vector<AppMode*> order = modes_;
+  if (active_) std::stable_partition(order.begin(), order.end(), [&](const AppMode* m) { return m == active_; });
+  for (AppMode* mode : order) {
+    if (mode->onCloseRequest(*this)) continue;
+    if (mode != active_) pendingMode_ = std::string(mode->name());
+    return;
+  }
+  quit_ = true;
+}
+
 Status Shell::switchTo(const std::string& name) {
   for (AppMode* mode : modes_) {
     if (mode->name() != name) continue;
@@ -168,6 +179,10 @@ Status Shell::playEventsDue(std::vector<std::filesystem::path>& captures) {
                      quit_ = true;
                      return Status{};
                    },
+                   [&](const CloseRequest&) {
+                     requestClose();
+                     return applyPendingMode();
+                   },
                    [&](const ModeEvent& m) {
                      Status status = active_->onReplayEvent(*this, m);
                      if (status) status = applyPendingMode();
@@ -222,10 +237,15 @@ void Shell::drawMessages() {
   ImGui::SetNextWindowPos({viewport->WorkPos.x + 10, viewport->WorkPos.y + viewport->WorkSize.y - 10}, ImGuiCond_Always,
                           {0.0f, 1.0f});
   ImGui::SetNextWindowBgAlpha(0.75f);
+  const double maxX = active_ ? active_->messagesMaxX() : 0.0;
+  const float maxWidth = maxX > 40 ? float(maxX - 20) : viewport->WorkSize.x - 20;
+  ImGui::SetNextWindowSizeConstraints({0, 0}, {maxWidth, viewport->WorkSize.y});
   ImGui::Begin("##messages", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  ImGui::PushTextWrapPos(maxWidth - ImGui::GetStyle().WindowPadding.x);
   for (const Message& message : messages_) ImGui::TextUnformatted(message.text.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::End();
 }
 
@@ -254,8 +274,14 @@ Result<ShellReport> Shell::run(std::string_view firstMode) {
   using Clock = std::chrono::steady_clock;
   FixedStepClock clock(replaying());
   Clock::time_point lastFrameEnd = Clock::now();
-  while (!quit_ && !window_->closeRequested()) {
+  while (!quit_) {
     glfwPollEvents();
+    if (window_->closeRequested()) {  // the close button: the modes may ask first
+      window_->cancelClose();
+      requestClose();
+      PW_TRY(applyPendingMode());
+      if (quit_) break;
+    }
     const glm::ivec2 size = window_->framebufferSize();
     if ((size.x == 0 || size.y == 0) && !replaying()) {  // minimised: sleep until restored
       glfwWaitEvents();

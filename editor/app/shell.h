@@ -77,6 +77,9 @@ class Shell {
   // `mode NAME` switches at once). An unknown name ends the run with an error.
   void requestMode(std::string name) { pendingMode_ = std::move(name); }
   void requestQuit() { quit_ = true; }
+  // What the window's close button does: asks the modes (AppMode::onCloseRequest) and
+  // quits when none objects.
+  void requestClose();
   // A message a person should see without the run ending: a line on stderr and, for
   // five seconds (300 steps), a line in the window over any mode.
   void showMessage(const std::string& text);

@@ -59,6 +59,8 @@ glm::ivec2 Window::framebufferSize() const {
 
 bool Window::closeRequested() const { return glfwWindowShouldClose(window_); }
 
+void Window::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+
 void Window::setCursorCaptured(bool captured) {
   glfwSetInputMode(window_, GLFW_CURSOR, captured ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
 }

@@ -44,6 +44,7 @@ class Window {
   VkSurfaceKHR surface() const { return surface_; }
   glm::ivec2 framebufferSize() const;  // pixels; 0 x 0 while minimised
   bool closeRequested() const;
+  void cancelClose();  // the close button was answered: the window stays
 
   // Where input goes (key repeats are dropped); a handler set again replaces the last.
   void setInputHandler(std::function<void(const InputEvent&)> handler) { onInput_ = std::move(handler); }

@@ -202,10 +202,15 @@ void EditMode::drawCamera(app::Shell& shell) {
   rememberWidget("reset to centre");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::TextDisabled(shot.principalPointPx ? "(moved)" : "(the photo's centre)");
-  wrapped(shot.principalPointPx ? kWarningColour : kNoteColour,
-          "drag the magenta PP handle to move it; a cropped or shifted photo moves the principal point "
-          "away from its centre, so move it only for such a photo");
+  ImGui::TextDisabled(shot.principalPointPx ? "(moved)" : "(the photo's centre) (?)");
+  constexpr const char* kPrincipalHelp =
+      "drag the magenta PP handle to move it; a cropped or shifted photo moves the principal point "
+      "away from its centre, so move it only for such a photo";
+  if (shot.principalPointPx) {
+    wrapped(kWarningColour, kPrincipalHelp);  // moved: the warning stays in view
+  } else if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", kPrincipalHelp);
+  }
 
   // The scale: the camera height, a reference length between two corners, or both
   // (the height scales, the reference is checked).

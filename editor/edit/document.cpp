@@ -7,6 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "editor/edit/autosave.h"
 #include "metrology/detect/detect.h"
 #include "modeling/shot_file.h"
 
@@ -101,6 +102,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     const auto source = doc.otherFields_.find("focal_source");
     doc.openedFocalSource_ =
         source != doc.otherFields_.end() && source->is_string() ? source->get<std::string>() : "the shot file";
+    doc.opened_ = doc.shot_;
     return doc;
   }
 
@@ -161,6 +163,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   doc.openedFocalPx_ = shot.focalPx;
   doc.openedFocalMm_ = shot.focalMm;
   doc.notes_.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it in the Camera panel");
+  doc.opened_ = doc.shot_;
   return doc;
 }
 
@@ -225,6 +228,21 @@ nlohmann::json Document::fieldsToWrite() const {
 Status Document::save() {
   PW_TRY(modeling::writeShotFile(path_, shot_, fieldsToWrite()));
   saved_ = shot_;
+  removeAutosave();
+  return {};
+}
+
+void Document::removeAutosave() const {
+  // Saved: an autosave's side file (autosave.h) would offer an older state back.
+  std::error_code ignored;
+  fs::remove(autosavePath(path_), ignored);
+}
+
+Status Document::saveAs(const fs::path& path) {
+  PW_TRY(modeling::writeShotFile(path, shot_, fieldsToWrite()));
+  path_ = path;
+  saved_ = shot_;
+  removeAutosave();
   return {};
 }
 

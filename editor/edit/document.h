@@ -75,6 +75,10 @@ class Document {
   // Unsaved changes: the shot differs from the file at path() (always, for a photo
   // never saved).
   bool dirty() const { return !saved_ || !sameShot(*saved_, shot_); }
+  // Changes a person would lose by closing now: the shot differs from the file saved,
+  // or, for a photo never saved, from what opening it gave (detection's corners,
+  // which opening it again gives back). What autosave keeps and closing asks about.
+  bool hasUnsavedEdits() const { return !sameShot(saved_ ? *saved_ : opened_, shot_); }
   // One line each: what opening found or assumed ("corners detected automatically, ...").
   const std::vector<std::string>& notes() const { return notes_; }
   // Per corner, the detection's confidence (0..1), while the corner is where detection
@@ -104,14 +108,21 @@ class Document {
   // Writes the shot to path() atomically (modeling::writeShotFile; the focal length in
   // the units it came in); the document is then clean.
   Status save();
+  // Save As: writes the shot to `path` atomically, as save() does (the image path made
+  // relative to its folder; fields photowalk does not read kept); the document then
+  // lives there, clean. Errors: the file cannot be written (the document stays as it was).
+  Status saveAs(const std::filesystem::path& path);
   // Writes the shot to `path` without changing the document's path or state.
   Status saveCopy(const std::filesystem::path& path) const;
 
  private:
+  void removeAutosave() const;  // the side file of path(), once saved
+
   std::filesystem::path path_;
   metrology::Shot shot_;
   nlohmann::json otherFields_ = nlohmann::json::object();  // the shot file's fields photowalk does not read, kept
   std::optional<metrology::Shot> saved_;
+  metrology::Shot opened_;  // the shot as opening gave it
   cv::Mat photo_;
   std::vector<std::string> notes_;
   std::array<std::optional<double>, metrology::kCornerCount> confidence_{};

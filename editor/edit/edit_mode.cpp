@@ -33,10 +33,12 @@ ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y});
 
 }  // namespace
 
-EditMode::EditMode(EditModeOptions options, ModelWalk& walk) : options_(std::move(options)), walk_(walk) {}
+EditMode::EditMode(EditModeOptions options, ModelWalk& walk) : options_(std::move(options)), walk_(walk) {
+  files_.recent = RecentFiles::load(options_.recentFilesPath.value_or(defaultRecentFilesPath()));
+}
 
 std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
-  return {{"save-copy", [scriptDir](std::istream& words) -> Result<std::any> {
+  std::vector<app::ReplayVerb> verbs = {{"save-copy", [scriptDir](std::istream& words) -> Result<std::any> {
              std::string file;
              if (!(words >> file)) return makeError("expected 'save-copy FILE.json'");
              fs::path path(file);
@@ -49,6 +51,8 @@ std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
              return std::any(TypeTextEvent{text});
            }},
           {"preview-wait", [](std::istream&) -> Result<std::any> { return std::any(PreviewWaitEvent{}); }}};
+  for (app::ReplayVerb& verb : filesReplayVerbs(scriptDir)) verbs.push_back(std::move(verb));
+  return verbs;
 }
 
 Status EditMode::open(app::Shell& shell) {
@@ -68,10 +72,13 @@ void EditMode::openFile(app::Shell& shell, const fs::path& path) {
     return;
   }
   showDocument(shell, std::move(*doc));
+  if (openError_.empty()) afterOpen(shell, path);  // recent files; a crash's autosave offered back
 }
 
 std::optional<Document> EditMode::takeDocument(app::Shell& shell) {
   if (drag_) endDrag(true);
+  updateFiles(shell, Autosave::kIntervalS);  // its unsaved edits autosaved as they are now
+  leaveDocument();
   std::optional<Document> doc = std::move(doc_);
   doc_.reset();
   if (photo_) (void)shell.renderer().removeImage(photo_);
@@ -93,6 +100,7 @@ void EditMode::showDocument(app::Shell& shell, Document doc) {
   if (photo_) (void)shell.renderer().removeImage(photo_);
   photo_ = *uploaded;
   openError_.clear();
+  leaveDocument();
   doc_ = std::move(doc);
   preview_.setDocument(doc_->photo());
   for (const std::string& note : doc_->notes()) shell.showMessage("note: " + note);
@@ -101,7 +109,6 @@ void EditMode::showDocument(app::Shell& shell, Document doc) {
   drag_.reset();
   panFrom_.reset();
   measuredShot_.reset();
-  discardOnDrop_.reset();
   layOut(shell);
   remeasure();
 }
@@ -132,16 +139,17 @@ void EditMode::onEnter(app::Shell& shell) {
   layOut(shell);
 }
 
-void EditMode::onLeave(app::Shell&) {
+void EditMode::onLeave(app::Shell& shell) {
   // Nothing stays held while another mode runs: a drag ends where it was.
   if (drag_) endDrag(true);
+  updateFiles(shell, Autosave::kIntervalS);  // autosave now: the editor is not updated while away
   panFrom_.reset();
   preview_.endOrbit();
   keys_.fill(false);
 }
 
 bool EditMode::overCanvas(const glm::dvec2& p) const {
-  if (!canvas_.area().contains(p)) return false;
+  if (!canvas_.area().contains(p) || dialogOpen()) return false;
   return std::none_of(uiRects_.begin(), uiRects_.end(), [&](const WindowRect& r) { return r.contains(p); });
 }
 
@@ -165,6 +173,7 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
   if (e.key < 0 || e.key > GLFW_KEY_LAST) return;
   keys_[e.key] = e.down;
   if (!e.down) return;
+  if (onFilesKey(shell, e)) return;  // a dialog's keys; Ctrl+O, Ctrl+Shift+S
   if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;  // typing into a panel's field
   const bool ctrl = ctrlHeld() || (e.mods & GLFW_MOD_CONTROL);
   const bool shift = shiftHeld() || (e.mods & GLFW_MOD_SHIFT);
@@ -268,14 +277,7 @@ void EditMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
     layoutOpener_(shell, path);
     return;
   }
-  if (doc_ && doc_->dirty() && discardOnDrop_ != path) {
-    discardOnDrop_ = path;
-    shell.showMessage("unsaved changes in " + doc_->path().string() + ": Ctrl+S saves them; drop " +
-                      path.filename().string() + " again to open it and discard them");
-    return;
-  }
-  if (drag_) endDrag(true);
-  openFile(shell, path);
+  requestOpen(shell, path);  // asks first when unsaved edits would be lost
 }
 
 void EditMode::select(int corner) { selected_ = (corner >= 0 && corner < kCornerCount) ? corner : -1; }
@@ -327,6 +329,7 @@ void EditMode::save(app::Shell& shell) {
     return;
   }
   shell.showMessage("saved " + doc_->path().string());
+  afterSave(shell);
 }
 
 void EditMode::walk(app::Shell& shell) {
@@ -345,6 +348,7 @@ void EditMode::walk(app::Shell& shell) {
 }
 
 Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
+  if (onFilesReplayEvent(shell, event)) return {};
   if (const auto* typed = std::any_cast<TypeTextEvent>(&event.value)) {
     if (ImGui::GetCurrentContext()) ImGui::GetIO().AddInputCharactersUTF8(typed->text.c_str());
     return {};
@@ -374,10 +378,11 @@ void EditMode::remeasure() {
   live_ = measureLive(*measuredShot_);
 }
 
-void EditMode::update(app::Shell& shell, double) {
+void EditMode::update(app::Shell& shell, double stepS) {
   layOut(shell);
   remeasure();
   if (doc_) preview_.update(shell, doc_->shot(), live_.measurement.has_value(), drag_.has_value());
+  updateFiles(shell, stepS);
   ++step_;
 }
 
@@ -417,6 +422,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
     row.add("measurement", ordered_json(nullptr));
   }
   addDocumentTrace(row);
+  traceFiles(row);
   if (const std::optional<Loupe> l = loupe()) {
     const glm::dvec2 size = l->rect.size();
     row.add("loupe", ordered_json{{"corner", metrology::cornerName(l->corner)},

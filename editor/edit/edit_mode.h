@@ -18,6 +18,7 @@
 #include "editor/app/app_mode.h"
 #include "editor/edit/canvas.h"
 #include "editor/edit/document.h"
+#include "editor/edit/edit_files.h"
 #include "editor/edit/live_measurement.h"
 #include "editor/edit/overlay.h"
 #include "editor/edit/preview.h"
@@ -29,6 +30,8 @@ class ModelWalk;
 struct EditModeOptions {
   std::optional<std::filesystem::path> file;  // a photo or a shot file to open; none: empty
   OpenOptions open;
+  // Where the recent files list is kept; unset: defaultRecentFilesPath().
+  std::optional<std::filesystem::path> recentFilesPath;
 };
 
 // `save-copy FILE`: the replay event that writes the shot as Ctrl+S would, to FILE
@@ -61,8 +64,10 @@ class EditMode : public app::AppMode {
   void onLeave(app::Shell& shell) override;
   void onInput(app::Shell& shell, const app::InputEvent& event) override;
   Status onReplayEvent(app::Shell& shell, const app::ModeEvent& event) override;
+  bool onCloseRequest(app::Shell& shell) override;  // asks first when there are unsaved edits
   void update(app::Shell& shell, double stepS) override;
   void traceRow(app::TraceRow& row) const override;
+  double messagesMaxX() const override { return windowSize_.x - panelWidthPx_; }  // left of the panel
   void drawUi(app::Shell& shell) override;
   app::FrameContent frame(app::Shell& shell) override;
 
@@ -114,6 +119,34 @@ class EditMode : public app::AppMode {
   void remeasure();  // when the shot changed since the last measurement
   std::optional<Loupe> loupe() const;
 
+  // files_ui.cpp: Open (the browser, recent files, drops), Save As, Export, autosave
+  // and recovery, and asking before unsaved edits are lost (Save / Discard / Cancel).
+  static std::vector<app::ReplayVerb> filesReplayVerbs(const std::filesystem::path& scriptDir);
+  bool onFilesReplayEvent(app::Shell& shell, const app::ModeEvent& event);  // true: one of its events
+  void requestOpen(app::Shell& shell, const std::filesystem::path& path);  // asks first if edits would be lost
+  void afterOpen(app::Shell& shell, const std::filesystem::path& opened);
+  void leaveDocument();  // before another file replaces this one
+  void afterSave(app::Shell& shell);
+  void openBrowser(app::Shell& shell, BrowserPurpose purpose);
+  void confirmBrowser(app::Shell& shell, const std::optional<std::filesystem::path>& chosen = std::nullopt);
+  void saveAs(app::Shell& shell, const std::filesystem::path& path);
+  void exportTo(app::Shell& shell, const std::filesystem::path& path);  // off the UI thread
+  void finishExport(app::Shell& shell, bool wait);  // says how it went, once it is done
+  void answerUnsaved(app::Shell& shell, int answer);  // 0 save, 1 discard, 2 cancel
+  void answerRecovery(app::Shell& shell, bool recover);
+  bool onFilesKey(app::Shell& shell, const app::KeyEvent& event);  // true: taken
+  bool dialogOpen() const { return files_.browser || files_.unsaved || files_.recovered; }
+  void updateFiles(app::Shell& shell, double stepS);
+  void traceFiles(app::TraceRow& row) const;
+  void drawFiles(app::Shell& shell);
+  void drawBrowser(app::Shell& shell);
+  void drawUnsaved(app::Shell& shell);
+  void drawRecovery(app::Shell& shell);
+  void drawOpenChoices(app::Shell& shell);  // the empty window's: open, recent files
+  void drawExportButtons(app::Shell& shell);  // the panel's Export .wrl and .glb
+  bool recordedButton(const char* label, const std::string& name);
+  void recordItem(const std::string& name);  // the last item's rectangle, for the trace
+
   // panels.cpp: the side panel (document, measurement, warnings, camera, corners, keys).
   void drawPanel(app::Shell& shell);
   void drawMeasurement();
@@ -157,7 +190,7 @@ class EditMode : public app::AppMode {
   long step_ = 0;
   long nudgeLoupeUntil_ = -1;  // the loupe shows until this step after a nudge
   std::array<bool, GLFW_KEY_LAST + 1> keys_{};
-  std::optional<std::filesystem::path> discardOnDrop_;  // a second drop of it discards unsaved changes
+  EditFiles files_;
   bool showKeys_ = false;
   bool showOverlay_ = true;  // H hides the handles and guides, to see the photo under them
   // Picking the reference length's two corners on the canvas: the first one picked, or

@@ -34,6 +34,8 @@ const char* const kKeys =
     "Ctrl+Z             undo\n"
     "Ctrl+Shift+Z, Ctrl+Y  redo\n"
     "Ctrl+S             save\n"
+    "Ctrl+Shift+S       save as (the file browser)\n"
+    "Ctrl+O             open a photo or shot file\n"
     "W                  walk through the model (Esc: back)\n"
     "B                  back to the building's plan (a layout open)\n"
     "P                  show/hide the 3D preview\n"
@@ -76,6 +78,7 @@ void EditMode::drawUi(app::Shell& shell) {
   else drawEmptyHint(shell);
   drawPanel(shell);
   preview_.drawUi(previewToolbar_);
+  drawFiles(shell);
   if (showKeys_) {
     ImGui::SetNextWindowPos({16, 40}, ImGuiCond_Appearing);
     ImGui::Begin("Keys", &showKeys_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
@@ -85,7 +88,7 @@ void EditMode::drawUi(app::Shell& shell) {
   }
 }
 
-void EditMode::drawEmptyHint(app::Shell&) {
+void EditMode::drawEmptyHint(app::Shell& shell) {
   const glm::dvec2 centre = canvas_.area().centre();
   ImGui::SetNextWindowPos({float(centre.x), float(centre.y)}, ImGuiCond_Always, {0.5f, 0.5f});
   ImGui::SetNextWindowSizeConstraints({0, 0}, {float(canvas_.area().size().x - 20), 1e6f});
@@ -93,9 +96,7 @@ void EditMode::drawEmptyHint(app::Shell&) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::TextUnformatted("No photo open.");
-  ImGui::TextUnformatted("Open one from the command line:");
-  ImGui::TextUnformatted("  photowalk edit PHOTO.jpg | SHOT.json");
-  ImGui::TextUnformatted("or drop a photo or a shot file on this window.");
+  drawOpenChoices(shell);
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   uiRects_.push_back(currentWindowRect());
   ImGui::End();
@@ -117,8 +118,12 @@ void EditMode::drawPanel(app::Shell& shell) {
   ImGui::PushStyleColor(ImGuiCol_Text, kNoteColour);
   ImGui::TextWrapped("saves to %s", doc_->path().string().c_str());
   ImGui::PopStyleColor();
+  // Three rows: the file, the edits and the views, the exports and the preview.
   if (ImGui::Button("Save")) save(shell);
   ImGui::SameLine();
+  if (ImGui::Button("Save As...")) openBrowser(shell, BrowserPurpose::kSaveAs);
+  ImGui::SameLine();
+  if (ImGui::Button("Open...")) openBrowser(shell, BrowserPurpose::kOpen);
   ImGui::BeginDisabled(!doc_->history().canUndo());
   if (ImGui::Button("Undo")) undo(shell);
   ImGui::EndDisabled();
@@ -134,11 +139,14 @@ void EditMode::drawPanel(app::Shell& shell) {
     ImGui::SameLine();
     if (ImGui::Button("Plan (B)")) shell.requestMode(planMode_);
   }
+  drawExportButtons(shell);
+  ImGui::SameLine();
   bool preview = preview_.shown();
   if (ImGui::Checkbox("3D preview (P)", &preview)) {
     preview_.setShown(preview);
     layOut(shell);
   }
+  if (files_.exporting) ImGui::TextDisabled("exporting %s...", files_.exporting->path.filename().string().c_str());
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
   drawMeasurement();

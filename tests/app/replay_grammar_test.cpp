@@ -32,11 +32,11 @@ TEST(ReplayGrammar, ParsesTheShellsEventsForEveryMode) {
   fs::create_directories(dir);
   std::ofstream(script) << "1 key LEFT_CONTROL down\n2 mouse 4 -2.5\n3 mouse right down\n4 mouse middle up\n"
                            "5 mousemove 200.5 150\n6 wheel -2\n7 drop in/shot.json\n8 resize 640 480\n"
-                           "9 capture /abs/c.png\n10 mode edit\n11 quit\n";
+                           "9 capture /abs/c.png\n10 mode edit\n11 quit\n12 close\n";
   const Result<std::vector<ReplayEvent>> read = readReplay(script);
   ASSERT_TRUE(read.ok()) << read.message();
   const std::vector<ReplayEvent>& e = *read;
-  ASSERT_EQ(e.size(), 11u);
+  ASSERT_EQ(e.size(), 12u);
   EXPECT_EQ(std::get<KeyEvent>(e[0].what).key, GLFW_KEY_LEFT_CONTROL);
   EXPECT_TRUE(std::get<KeyEvent>(e[0].what).down);
   EXPECT_DOUBLE_EQ(std::get<PointerMotionEvent>(e[1].what).dyPx, -2.5);
@@ -52,6 +52,7 @@ TEST(ReplayGrammar, ParsesTheShellsEventsForEveryMode) {
   EXPECT_EQ(std::get<CaptureRequest>(e[8].what).path, "/abs/c.png");  // absolute paths stay
   EXPECT_EQ(std::get<ModeRequest>(e[9].what).mode, "edit");
   EXPECT_TRUE(std::holds_alternative<QuitRequest>(e[10].what));
+  EXPECT_TRUE(std::holds_alternative<CloseRequest>(e[11].what));
   // The input among them is what a window reports; the rest is not input.
   EXPECT_TRUE(inputOf(e[0].what).has_value());
   EXPECT_TRUE(inputOf(e[6].what).has_value());
@@ -71,7 +72,7 @@ TEST(ReplayGrammar, ModesAddTheirOwnEvents) {
   auto unknown = parseReplay("3 jump 0.5\n", "s.replay", ".");
   ASSERT_FALSE(unknown.ok());
   EXPECT_EQ(unknown.message(),
-            "s.replay:1: unknown event 'jump' (key, mouse, mousemove, wheel, drop, resize, capture, mode, quit)");
+            "s.replay:1: unknown event 'jump' (key, mouse, mousemove, wheel, drop, resize, capture, mode, quit, close)");
   // The mode's parser says what it expected, at the line.
   auto bad = parseReplay("\n# a comment\n3 jump -1\n", "s.replay", ".", kJumpVerb);
   ASSERT_FALSE(bad.ok());
@@ -91,7 +92,7 @@ TEST(ReplayGrammar, ErrorsSayWhatWasExpected) {
       {"1 resize 10 20000", "expected 'resize WIDTH HEIGHT' in pixels (1..16384)"},
       {"1 key w down", "unknown key 'w' (use GLFW names: W, UP, LEFT_SHIFT, PAGE_UP, F12)"},
       {"-1 quit", "expected a frame number (0, 1, 2, ...) first, not '-1'"},
-      {"1", "expected an event after the frame (key, mouse, mousemove, wheel, drop, resize, capture, mode, quit)"},
+      {"1", "expected an event after the frame (key, mouse, mousemove, wheel, drop, resize, capture, mode, quit, close)"},
   };
   for (const auto& [line, expected] : cases) {
     auto parsed = parseReplay(line, "s", ".");

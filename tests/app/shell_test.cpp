@@ -48,8 +48,11 @@ class OtherMode : public AppMode {
     ImGui::End();
   }
   FrameContent frame(Shell&) override { return {{}, kMagenta}; }
+  // Objects to the first `refuseCloses` close requests (as the editor with unsaved edits).
+  bool onCloseRequest(Shell&) override { return ++closeAsks > refuseCloses; }
 
   int enters = 0, leaves = 0;
+  int closeAsks = 0, refuseCloses = 0;
   std::vector<KeyEvent> keys;
   double simulatedS = 0;
 };
@@ -205,6 +208,28 @@ TEST_F(ShellTest, EscapeInTheWalkGoesToTheModeItNames) {
   ASSERT_EQ(other.keys.size(), 1u);  // the walk took Esc down; its release came to the other
   EXPECT_EQ(other.keys[0].key, GLFW_KEY_ESCAPE);
   EXPECT_FALSE(other.keys[0].down);
+}
+
+TEST_F(ShellTest, AModeThatObjectsToClosingKeepsTheWindowAndBecomesActive) {
+  const engine::Scene scene = engine::makeSampleScene();
+  auto shell = Shell::create(options("5 close\n8 mode walk\n10 close\n40 quit\n"));
+  ASSERT_TRUE(shell.ok()) << shell.message();
+  walk::WalkMode walkMode(scene, {});
+  OtherMode other;
+  other.refuseCloses = 2;
+  ASSERT_TRUE((*shell)->addMode(walkMode).ok());
+  ASSERT_TRUE((*shell)->addMode(other).ok());
+  // The window's close button, pressed before the first frame: asked, refused.
+  glfwSetWindowShouldClose((*shell)->window().handle(), GLFW_TRUE);
+  auto report = (*shell)->run("walk");
+  ASSERT_TRUE(report.ok()) << report.message();
+  const auto rows = trace();
+  ASSERT_EQ(rows.size(), 11u);  // the third request (frame 10) is agreed to: no frame after it
+  EXPECT_EQ(rows[0]["mode"], "other");  // the mode that asked became the active one
+  EXPECT_EQ(rows[7]["mode"], "other");
+  EXPECT_EQ(rows[9]["mode"], "walk");
+  EXPECT_EQ(other.closeAsks, 3);
+  EXPECT_FALSE(glfwWindowShouldClose((*shell)->window().handle()));  // each refusal kept it open
 }
 
 TEST_F(ShellTest, UnknownModeOrWalkEventEndsTheRunWithAnError) {

@@ -89,9 +89,11 @@ class EditCamera : public ::testing::Test {
     setenv("PW_VALIDATION", "1", 1);
   }
 
+  // Runs the editor on the EXIF photo with `script`, the 3D preview hidden (P) so that the
+  // whole Camera panel fits in the window.
   std::vector<Row> edit(const std::string& name, const std::string& script) {
     const fs::path scriptPath = dir_ / (name + ".replay"), tracePath = dir_ / (name + ".jsonl");
-    std::ofstream(scriptPath) << script;
+    std::ofstream(scriptPath) << "0 key P down\n0 key P up\n" << script;
     fs::remove(tracePath);
     const CommandRun run = photowalk("edit " + (dir_ / "turned.jpg").string() + " --size " + std::to_string(kWidth) +
                                      "x" + std::to_string(kHeight) + " --no-vsync --replay " + scriptPath.string() +
