@@ -140,7 +140,13 @@ void EditMode::drawPanel(app::Shell& shell) {
     if (ImGui::Button("Plan (B)")) shell.requestMode(planMode_);
   }
   drawExportButtons(shell);
-  ImGui::SameLine();
+  // The preview's box beside the exports when it fits in the panel, else below them.
+  const float boxWidth = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                         ImGui::CalcTextSize("3D preview (P)").x;
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + boxWidth <=
+      ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+    ImGui::SameLine();
+  }
   bool preview = preview_.shown();
   if (ImGui::Checkbox("3D preview (P)", &preview)) {
     preview_.setShown(preview);
