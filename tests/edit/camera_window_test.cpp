@@ -31,40 +31,6 @@ using pw::test::CommandRun;
 constexpr int kWidth = 1260, kHeight = 1000;
 constexpr double kFocalMm = 5.02299, kPxPerMm = 160.0;  // corridor_b's 803.68 px on a 6.4 x 4.8 mm sensor
 
-// A replay script: lines `FRAME EVENT` (as edit_window_test.cpp's).
-class Script {
- public:
-  Script& at(int frame, const std::string& event) {
-    text_ << frame << ' ' << event << '\n';
-    return *this;
-  }
-  Script& move(int frame, const glm::dvec2& p) {
-    std::ostringstream e;
-    e.precision(17);
-    e << "mousemove " << p.x << ' ' << p.y;
-    return at(frame, e.str());
-  }
-  // Moves there, presses the frame after and releases the one after that.
-  Script& click(int frame, const glm::dvec2& p) {
-    return move(frame, p).at(frame + 1, "mouse left down").at(frame + 2, "mouse left up");
-  }
-  // Held for two frames, so that ImGui sees it down.
-  Script& key(int frame, const std::string& name) { return at(frame, "key " + name + " down").at(frame + 2, "key " + name + " up"); }
-  Script& ctrlKey(int frame, const std::string& name) {
-    return at(frame, "key LEFT_CONTROL down").key(frame + 1, name).at(frame + 4, "key LEFT_CONTROL up");
-  }
-  Script& drag(int frame, const glm::dvec2& from, const glm::dvec2& by, int steps = 4) {
-    move(frame, from);
-    at(frame, "mouse left down");
-    for (int i = 1; i <= steps; ++i) move(frame + i, from + by * (double(i) / steps));
-    return at(frame + steps + 1, "mouse left up");
-  }
-  std::string str() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-};
-
 class EditCamera : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -154,7 +120,7 @@ TEST_F(EditCamera, ThePrincipalPointHandleDragsAndUndoesAndAReferenceLengthSetsT
   // The principal point dragged 40 px right and 30 up, undone; the reference ticked.
   Script s;
   s.drag(5, pp, {40, -30});
-  s.ctrlKey(14, "Z");
+  s.ctrlKeyHeld(14, "Z");
   s.click(22, widget(r0, "reference length"));
   const int prefixEnd = 30;
   const auto second = edit("reference_on", s.str() + std::to_string(prefixEnd) + " quit\n");
@@ -194,11 +160,11 @@ TEST_F(EditCamera, ThePrincipalPointHandleDragsAndUndoesAndAReferenceLengthSetsT
 
   // Type 4.5 m into the reference's field; undo, redo; save.
   s.click(60, widget(r2, "reference m"));
-  s.ctrlKey(64, "A").at(70, "type 4.5").key(72, "ENTER");
+  s.ctrlKeyHeld(64, "A").at(70, "type 4.5").key(72, "ENTER", 2);
   s.at(80, "capture camera.png");
-  s.ctrlKey(82, "Z");
-  s.ctrlKey(90, "Y");
-  s.ctrlKey(98, "S");
+  s.ctrlKeyHeld(82, "Z");
+  s.ctrlKeyHeld(90, "Y");
+  s.ctrlKeyHeld(98, "S");
   s.at(106, "quit");
   const auto rows = edit("reference", s.str());
   ASSERT_GE(rows.size(), 106u);
@@ -234,7 +200,7 @@ TEST_F(EditCamera, ACrossedCornerIsRingedOnItsHandle) {
   Script s;
   s.drag(5, p6, {p5.x - p6.x - 60, 0});
   s.at(12, "capture warning.png");
-  s.ctrlKey(14, "Z");
+  s.ctrlKeyHeld(14, "Z");
   s.at(22, "quit");
   const auto rows = edit("cross", s.str());
   ASSERT_GE(rows.size(), 22u);

@@ -35,46 +35,6 @@ using pw::test::CommandRun;
 
 constexpr int kWidth = 960, kHeight = 600;
 
-// A replay script: lines `FRAME EVENT` (as edit_window_test.cpp's).
-class Script {
- public:
-  Script& at(int frame, const std::string& event) {
-    text_ << frame << ' ' << event << '\n';
-    return *this;
-  }
-  Script& move(int frame, const glm::dvec2& p) {
-    std::ostringstream e;
-    e.precision(17);
-    e << "mousemove " << p.x << ' ' << p.y;
-    return at(frame, e.str());
-  }
-  Script& key(int frame, const std::string& name) { return at(frame, "key " + name + " down").at(frame, "key " + name + " up"); }
-  Script& ctrlKey(int frame, const std::string& name, bool shift = false) {
-    at(frame, "key LEFT_CONTROL down");
-    if (shift) at(frame, "key LEFT_SHIFT down");
-    key(frame, name);
-    if (shift) at(frame, "key LEFT_SHIFT up");
-    return at(frame, "key LEFT_CONTROL up");
-  }
-  Script& drag(int frame, const glm::dvec2& from, const glm::dvec2& by, int steps = 4) {
-    move(frame, from);
-    at(frame, "mouse left down");
-    for (int i = 1; i <= steps; ++i) move(frame + i, from + by * (double(i) / steps));
-    return at(frame + steps + 1, "mouse left up");
-  }
-  // A click on the centre of `rect` [x, y, w, h]: move, press, release on three frames.
-  Script& click(int frame, const nlohmann::json& rect) {
-    const glm::dvec2 centre(double(rect.at(0)) + 0.5 * double(rect.at(2)), double(rect.at(1)) + 0.5 * double(rect.at(3)));
-    move(frame, centre);
-    at(frame + 1, "mouse left down");
-    return at(frame + 2, "mouse left up");
-  }
-  std::string str() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-};
-
 class EditFiles : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {

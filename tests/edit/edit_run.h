@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,59 @@ namespace pw::edit::test {
 inline pw::test::CommandRun photowalk(const std::string& arguments) {
   return pw::test::runCommand(std::string(PW_PHOTOWALK) + " " + arguments);
 }
+
+// A replay script (README "The editor's test interface"): lines `FRAME EVENT ARGS`.
+class Script {
+ public:
+  Script& at(int frame, const std::string& event) {
+    text_ << frame << ' ' << event << '\n';
+    return *this;
+  }
+  Script& move(int frame, const glm::dvec2& p) {
+    std::ostringstream e;
+    e.precision(17);
+    e << "mousemove " << p.x << ' ' << p.y;
+    return at(frame, e.str());
+  }
+  // Down at `frame`, up `holdFrames` later (ImGui's fields see a key only if it is held
+  // across a frame).
+  Script& key(int frame, const std::string& name, int holdFrames = 0) {
+    return at(frame, "key " + name + " down").at(frame + holdFrames, "key " + name + " up");
+  }
+  // Ctrl (and Shift) + NAME, all on one frame: the editor's own shortcuts.
+  Script& ctrlKey(int frame, const std::string& name, bool shift = false) {
+    at(frame, "key LEFT_CONTROL down");
+    if (shift) at(frame, "key LEFT_SHIFT down");
+    key(frame, name);
+    if (shift) at(frame, "key LEFT_SHIFT up");
+    return at(frame, "key LEFT_CONTROL up");
+  }
+  // Ctrl + NAME held across frames (for an ImGui field: Ctrl+A): frames `frame` to `frame + 4`.
+  Script& ctrlKeyHeld(int frame, const std::string& name) {
+    return at(frame, "key LEFT_CONTROL down").key(frame + 1, name, 2).at(frame + 4, "key LEFT_CONTROL up");
+  }
+  // Presses at `from` (frame), moves by `by` in `steps` moves one frame apart, releases
+  // the frame after: `steps + 2` frames in all.
+  Script& drag(int frame, const glm::dvec2& from, const glm::dvec2& by, int steps = 4, const std::string& button = "left") {
+    move(frame, from);
+    at(frame, "mouse " + button + " down");
+    for (int i = 1; i <= steps; ++i) move(frame + i, from + by * (double(i) / steps));
+    return at(frame + steps + 1, "mouse " + button + " up");
+  }
+  // Moves to `p`, presses the frame after and releases the one after that.
+  Script& click(int frame, const glm::dvec2& p) {
+    return move(frame, p).at(frame + 1, "mouse left down").at(frame + 2, "mouse left up");
+  }
+  // The same on the centre of a trace's rectangle [x, y, w, h].
+  Script& click(int frame, const nlohmann::json& rect) {
+    return click(frame, glm::dvec2(double(rect.at(0)) + 0.5 * double(rect.at(2)),
+                                   double(rect.at(1)) + 0.5 * double(rect.at(3))));
+  }
+  std::string str() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+};
 
 // One row of an editor's --trace.
 struct Row {

@@ -26,41 +26,6 @@ using pw::test::CommandRun;
 
 constexpr int kWidth = 960, kHeight = 600;  // the canvas is the left 672 x 600
 
-// A replay script: lines `FRAME EVENT`.
-class Script {
- public:
-  Script& at(int frame, const std::string& event) {
-    text_ << frame << ' ' << event << '\n';
-    return *this;
-  }
-  Script& move(int frame, const glm::dvec2& p) {
-    std::ostringstream e;
-    e.precision(17);
-    e << "mousemove " << p.x << ' ' << p.y;
-    return at(frame, e.str());
-  }
-  Script& key(int frame, const std::string& name) { return at(frame, "key " + name + " down").at(frame, "key " + name + " up"); }
-  Script& ctrlKey(int frame, const std::string& name, bool shift = false) {
-    at(frame, "key LEFT_CONTROL down");
-    if (shift) at(frame, "key LEFT_SHIFT down");
-    key(frame, name);
-    if (shift) at(frame, "key LEFT_SHIFT up");
-    return at(frame, "key LEFT_CONTROL up");
-  }
-  // Presses at `from` (frame), moves by `by` in `steps` moves one frame apart, releases
-  // the frame after: `steps + 2` frames in all.
-  Script& drag(int frame, const glm::dvec2& from, const glm::dvec2& by, int steps = 4, const std::string& button = "left") {
-    move(frame, from);
-    at(frame, "mouse " + button + " down");
-    for (int i = 1; i <= steps; ++i) move(frame + i, from + by * (double(i) / steps));
-    return at(frame + steps + 1, "mouse " + button + " up");
-  }
-  std::string str() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-};
-
 class Edit : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {

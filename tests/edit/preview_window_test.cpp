@@ -29,32 +29,6 @@ using pw::test::CommandRun;
 
 constexpr int kWidth = 960, kHeight = 600;  // the pane is the lower right 288 x 216, under a 30 px toolbar
 
-class Script {
- public:
-  Script& at(int frame, const std::string& event) {
-    text_ << frame << ' ' << event << '\n';
-    return *this;
-  }
-  Script& move(int frame, const glm::dvec2& p) {
-    std::ostringstream e;
-    e.precision(17);
-    e << "mousemove " << p.x << ' ' << p.y;
-    return at(frame, e.str());
-  }
-  // Presses at `from` (frame), moves by `by` in `steps` moves one frame apart, releases
-  // the frame after: `steps + 2` frames in all.
-  Script& drag(int frame, const glm::dvec2& from, const glm::dvec2& by, int steps) {
-    move(frame, from);
-    at(frame, "mouse left down");
-    for (int i = 1; i <= steps; ++i) move(frame + i, from + by * (double(i) / steps));
-    return at(frame + steps + 1, "mouse left up");
-  }
-  std::string str() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-};
-
 // The "preview" field of a trace row.
 struct PreviewRow {
   bool shown = false;
