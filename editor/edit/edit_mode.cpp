@@ -340,10 +340,13 @@ void EditMode::walk(app::Shell& shell) {
     shell.showMessage("walk: the corners cannot be measured yet: " + live_.error);
     return;
   }
-  if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *live_.measurement); !shown) {
+  // The preview's full model when it is of the corners as they are: W then only uploads it.
+  std::shared_ptr<const engine::Scene> built = preview_.fullSceneOf(doc_->shot());
+  if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *live_.measurement, built); !shown) {
     shell.showMessage("walk: no model: " + shown.message());
     return;
   }
+  walkModelFrom_ = built ? "preview" : "built";
   shell.requestMode(std::string(walk_.name()));
 }
 
@@ -434,6 +437,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
   }
   addCameraTrace(row);
   row.add("preview", preview_.trace(doc_ ? &doc_->shot() : nullptr));
+  row.add("walk_model", walkModelFrom_.empty() ? ordered_json(nullptr) : ordered_json(walkModelFrom_));
 }
 
 app::FrameContent EditMode::frame(app::Shell&) {

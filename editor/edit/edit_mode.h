@@ -200,6 +200,7 @@ class EditMode : public app::AppMode {
   // The Camera panel's widgets as last drawn (window pixels), by name: the trace's
   // "camera"."widgets", so that replay scripts can click them.
   std::vector<std::pair<std::string, WindowRect>> widgetRects_;
+  std::string walkModelFrom_;  // the last W's model: "preview" (the preview's full one) or "built"
   std::string planMode_;     // building_mode.h's name while a building is open
   std::function<void(app::Shell&, const std::filesystem::path&)> layoutOpener_;
 

@@ -36,8 +36,10 @@ class ModelWalk : public app::AppMode {
   // Makes the model of `shot` the one walked: builds it (unless it is the shot walked
   // last) and uploads it, starting at its Photo viewpoint. Errors: the model cannot be
   // built (the message says why), the upload failing; the last model then stays.
+  // `built`: the model of `shot` already built (the 3D preview's full one), walked
+  // instead of building it again.
   Status show(app::Shell& shell, const metrology::Shot& shot, const cv::Mat& photo,
-              const metrology::Measurement& measurement);
+              const metrology::Measurement& measurement, std::shared_ptr<const engine::Scene> built = nullptr);
   // Makes `scene` (a whole building: modeling::buildModel) the one walked, from its
   // first viewpoint; Esc then goes back to the mode `backTo`. Errors: the upload.
   Status showScene(app::Shell& shell, engine::Scene scene, std::string backTo);

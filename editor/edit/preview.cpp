@@ -121,6 +121,11 @@ Status Preview::waitForFull(app::Shell& shell, const metrology::Shot& shot, bool
   }
 }
 
+std::shared_ptr<const engine::Scene> Preview::fullSceneOf(const metrology::Shot& shot) const {
+  if (!builtScene_ || !fullAndCurrent(shot)) return nullptr;
+  return builtScene_;
+}
+
 void Preview::take(app::Shell& shell, PreviewBuilder::Done done, const metrology::Shot& shot) {
   std::optional<ShownBuild> shown;
   if (scene_) shown = ShownBuild{shownDocument_, shownRequest_, builtFrom_};
@@ -150,6 +155,7 @@ void Preview::take(app::Shell& shell, PreviewBuilder::Done done, const metrology
   builtShot_ = std::move(done.shot);
   builtFrom_ = done.from;
   builtPhotoPx_ = model.photoSizePx;
+  builtScene_ = model.scene;
   buildMs_ = model.buildMs;
   photoCamera_ = model.photoCamera;
   centre_ = model.bounds.empty() ? photoCamera_.position : model.bounds.center();

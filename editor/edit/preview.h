@@ -82,6 +82,10 @@ class Preview {
 
   void toPhotoCamera();
 
+  // The model shown, when it is of the full photo and of `shot` as it is (the walk's
+  // model, already built); null otherwise.
+  std::shared_ptr<const engine::Scene> fullSceneOf(const metrology::Shot& shot) const;
+
  private:
   void poll(app::Shell& shell, const metrology::Shot& shot);  // takes what the worker finished
   void ask(const metrology::Shot& shot, bool dragging);        // a build, when the shot needs one
@@ -106,6 +110,7 @@ class Preview {
   std::optional<metrology::Shot> builtShot_;
   PreviewResolution builtFrom_ = PreviewResolution::kFull;
   glm::ivec2 builtPhotoPx_{0};
+  std::shared_ptr<const engine::Scene> builtScene_;
   double buildMs_ = 0;
   std::string error_;  // why the last build failed (the last model stays)
   engine::Camera photoCamera_;

@@ -80,7 +80,8 @@ Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const m
   const engine::Bounds bounds = engine::sceneBounds(*scene);
   auto staged = renderer.stageScene(*scene);
   if (!staged) return staged.error();
-  PreviewModel model{std::move(*staged), photoCamera, bounds, {photo.cols, photo.rows}, 0.0};
+  PreviewModel model{std::move(*staged), std::make_shared<const engine::Scene>(std::move(*scene)), photoCamera,
+                     bounds, {photo.cols, photo.rows}, 0.0};
   model.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return model;
 }

@@ -47,6 +47,9 @@ const char* resolutionName(PreviewResolution resolution);  // "reduced", "full"
 // preview's camera needs of it.
 struct PreviewModel {
   engine::StagedScene staged;
+  // The scene staged (its textures shared, not copied): the walk's model when the
+  // preview's is of the full photo (EditMode::walk, so that W does not build it again).
+  std::shared_ptr<const engine::Scene> scene;
   engine::Camera photoCamera;  // the scene's "Photo" viewpoint: the photo's camera
   engine::Bounds bounds;       // of the whole scene, world metres
   glm::ivec2 photoSizePx{0};   // of the photo it was cut from

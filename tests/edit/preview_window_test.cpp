@@ -223,6 +223,23 @@ TEST_F(Preview, OrbitingTheModelChangesWhatThePaneShows) {
   std::printf("orbit: %.1f levels from the photo camera's view\n", moved);
 }
 
+TEST_F(Preview, WWalksThePreviewsFullModelWithoutBuildingItAgain) {
+  const std::string file = (Preview::dir_ / "corridor_b.json").string();
+  Script s;
+  s.key(0, "W").key(4, "ESCAPE");       // at once: no model built yet, so W builds the walk's
+  s.at(6, "preview-wait");               // the preview's full model of these corners
+  s.key(8, "W").key(12, "ESCAPE").at(16, "quit");
+  const auto rows = Preview::edit("preview_walk", file, s.str());
+  ASSERT_GE(rows.size(), 16u);
+  EXPECT_EQ(rows[2].mode, "walk");
+  ASSERT_EQ(rows[5].mode, "edit");
+  EXPECT_EQ(rows[5].raw.at("walk_model"), "built");
+  EXPECT_TRUE(previewOf(rows[6]).current);
+  EXPECT_EQ(rows[10].mode, "walk");
+  ASSERT_EQ(rows[14].mode, "edit");
+  EXPECT_EQ(rows[14].raw.at("walk_model"), "preview") << rows[14].raw.dump();
+}
+
 TEST_F(Preview, ThePhotoCameraButtonGivesThePhotosFramingBack) {
   const OrbitRun& run = orbitRun();
   ASSERT_GE(run.rows.size(), 22u);
