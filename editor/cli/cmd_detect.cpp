@@ -9,6 +9,7 @@
 
 #include "base/atomic_file.h"
 #include "editor/cli/command.h"
+#include "modeling/exif.h"
 #include "modeling/shot_file.h"
 #include "metrology/detect/detect.h"
 #include "metrology/detect/overlay.h"
@@ -28,9 +29,11 @@ constexpr const char* kUsage =
     "writes a shot file ready for measure, build and the editor, with a \"detection\"\n"
     "object giving each vanishing point's and each corner's confidence (0..1).\n\n"
     "  -o, --output SHOT.json  the shot file to write (the image path in it is relative)\n"
-    "  --focal-px F            focal length in pixels; without it, it is estimated from a\n"
-    "                          second finite vanishing point, or a 28 mm-equivalent\n"
-    "                          default is assumed (with a warning)\n"
+    "  --focal-px F            focal length in pixels; without it, the photo's EXIF gives\n"
+    "                          it (FocalLength with FocalPlaneXResolution, or\n"
+    "                          FocalLengthIn35mmFilm), else it is estimated from a second\n"
+    "                          finite vanishing point, or a 28 mm-equivalent default is\n"
+    "                          assumed (with a warning); the shot's focal_source says which\n"
     "  --principal-point U,V   in pixels (default: the image centre)\n"
     "  --camera-height H       camera height above the floor, metres (measure needs it,\n"
     "                          or a reference length added in the editor)\n"
@@ -80,8 +83,9 @@ json detectionJson(const CorridorDetection& d) {
 
 // The shot file through writeShotFile (the format's one writer), with the detection
 // object beside the shot's fields.
-Status writeDetectedShot(const fs::path& path, const metrology::Shot& shot, const json& detection) {
-  return modeling::writeShotFile(path, shot, json{{"detection", detection}});
+Status writeDetectedShot(const fs::path& path, const metrology::Shot& shot, const json& detection,
+                         const std::string& focalSource) {
+  return modeling::writeShotFile(path, shot, json{{"focal_source", focalSource}, {"detection", detection}});
 }
 
 int runDetect(Args& args) {
@@ -118,13 +122,17 @@ int runDetect(Args& args) {
   const std::string& photoPath = positionals[0];
   std::error_code ec;
   if (!fs::is_regular_file(photoPath, ec)) return fail(photoPath + ": no such file");
-  cv::Mat photo;
-  try {
-    photo = cv::imread(photoPath, cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-    photo.release();
+  // The photo as shown (its EXIF orientation applied, as every reader of the shot
+  // applies it), and the EXIF focal length when none is given.
+  auto read = modeling::readPhoto(photoPath);
+  if (!read) return fail(read.message());
+  const cv::Mat& photo = read->bgr;
+  for (const std::string& note : read->notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+  std::optional<modeling::ExifFocal> exifFocal;
+  if (!focal && read->focal) {
+    exifFocal = read->focal;
+    options.focalPx = exifFocal->focalPx;
   }
-  if (photo.empty()) return fail(photoPath + ": not a readable PNG/JPEG image");
 
   auto detection = metrology::detect::detectCorridor(photo, options);
   if (!detection) return fail(photoPath + ": " + detection.message());
@@ -139,10 +147,14 @@ int runDetect(Args& args) {
   shot.imageWidth = photo.cols;
   shot.imageHeight = photo.rows;
   shot.focalPx = detection->focalPx;
+  if (exifFocal && exifFocal->focalMm) shot.focalMm = exifFocal->focalMm;  // kept in the EXIF's millimetres
+  const std::string focalSource = exifFocal ? exifFocal->source : metrology::detect::focalSourceName(detection->focalSource);
   shot.principalPointPx = detection->principalPointPx;
   shot.cameraHeightM = cameraHeightM;
   for (int k = 0; k < metrology::kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
-  if (Status written = writeDetectedShot(*output, shot, detectionJson(*detection)); !written) {
+  json report = detectionJson(*detection);
+  if (exifFocal) report["focal_source"] = "exif";
+  if (Status written = writeDetectedShot(*output, shot, report, focalSource); !written) {
     return fail(written.message());
   }
   if (overlayPath) {
@@ -161,7 +173,7 @@ int runDetect(Args& args) {
   }
   const glm::dvec2 vp = detection->corridor.pixel();
   std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,
-              detection->corridor.confidence, detection->focalPx, metrology::detect::focalSourceName(detection->focalSource));
+              detection->corridor.confidence, detection->focalPx, focalSource.c_str());
   for (int k = 0; k < metrology::kCornerCount; ++k) {
     const auto& c = detection->corners[k];
     std::printf("  %s (%8.2f, %8.2f)  confidence %.2f\n", metrology::cornerName(k), c.px.x, c.px.y, c.confidence);

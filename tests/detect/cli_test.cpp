@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/detect/corridor_cases.h"
+#include "tests/support/exif_jpeg.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -78,6 +79,52 @@ TEST_F(DetectCommand, WritesAShotThatMeasureReads) {
   const nlohmann::json m = nlohmann::json::parse(measure.out);
   EXPECT_NEAR(m["width_m"].get<double>(), c.widthM, 0.02 * c.widthM);
   EXPECT_NEAR(m["height_m"].get<double>(), c.heightM, 0.02 * c.heightM);
+}
+
+// Without --focal-px, the photo's EXIF focal length (modeling/exif.h, the editor's
+// code) is the one detect uses: the same corners as with that focal length given, the
+// shot in the EXIF's millimetres with its source; a photo without EXIF does not say EXIF.
+TEST_F(DetectCommand, UsesTheExifFocalLengthWhenNoneIsGiven) {
+  const auto cases = pw::metrology::detect::testing::loadCorridorCases();
+  const auto& c = cases[0];
+  constexpr double kPxPerMm = 160.0;  // FocalPlaneXResolution 1600 px/cm
+  const double focalMm = c.focalPx / kPxPerMm;
+  pw::test::ExifFields f;
+  f.focalLength = {unsigned(focalMm * 100000 + 0.5), 100000};
+  f.focalPlaneXResolution = f.focalPlaneYResolution = std::pair<unsigned, unsigned>{1600, 1};
+  f.focalPlaneResolutionUnit = 3;  // cm
+  const fs::path withExif = dir_ / "exif.jpg", without = dir_ / "plain.jpg";
+  pw::test::writeBytes(withExif, pw::test::jpegWithApp1(c.image, pw::test::exifBlock(f)));
+  ASSERT_TRUE(cv::imwrite(without.string(), c.image, {cv::IMWRITE_JPEG_QUALITY, 95}));
+  const double exifFocalPx = double(unsigned(focalMm * 100000 + 0.5)) / 100000 * kPxPerMm;
+
+  const fs::path fromExif = dir_ / "exif.json", given = dir_ / "given.json", plain = dir_ / "plain.json";
+  const std::string height = " --camera-height " + std::to_string(c.cameraHeightM);
+  const CommandRun a = run("detect " + withExif.string() + height + " -o " + fromExif.string());
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  std::ostringstream focalText;
+  focalText.precision(17);
+  focalText << exifFocalPx;
+  const CommandRun b = run("detect " + withExif.string() + height + " --focal-px " + focalText.str() + " -o " + given.string());
+  ASSERT_EQ(b.exitCode, 0) << b.err;
+  const CommandRun p = run("detect " + without.string() + height + " -o " + plain.string());
+  ASSERT_EQ(p.exitCode, 0) << p.err;
+
+  const nlohmann::json e = nlohmann::json::parse(slurp(fromExif)), g = nlohmann::json::parse(slurp(given));
+  EXPECT_EQ(e["focal_source"].get<std::string>().rfind("EXIF FocalLength", 0), 0u) << e.dump();
+  EXPECT_EQ(e["detection"]["focal_source"], "exif");
+  EXPECT_NEAR(e["focal_mm"].get<double>(), exifFocalPx / kPxPerMm, 1e-9);
+  EXPECT_NEAR(e["sensor_width_mm"].get<double>(), c.image.cols / kPxPerMm, 1e-9);
+  EXPECT_EQ(e["corners_px"], g["corners_px"]);  // the very detection of the focal length given
+  EXPECT_NE(a.out.find("EXIF FocalLength"), std::string::npos) << a.out;
+  const nlohmann::json n = nlohmann::json::parse(slurp(plain));
+  EXPECT_EQ(n["focal_source"].get<std::string>().find("EXIF"), std::string::npos) << n["focal_source"];
+
+  const CommandRun measure = run("measure " + fromExif.string());
+  ASSERT_EQ(measure.exitCode, 0) << measure.err;
+  const nlohmann::json m = nlohmann::json::parse(measure.out);
+  EXPECT_NEAR(m["width_m"].get<double>(), c.widthM, 0.01 * c.widthM);
+  EXPECT_NEAR(m["height_m"].get<double>(), c.heightM, 0.01 * c.heightM);
 }
 
 TEST_F(DetectCommand, NoCorridorIsExitTwoAndWritesNothing) {
