@@ -54,6 +54,16 @@ bool Building::dirty() const {
   return std::any_of(shots_.begin(), shots_.end(), [](const auto& s) { return s.second.doc && s.second.doc->dirty(); });
 }
 
+std::vector<fs::path> Building::unsavedFiles(const Document* lentShot) const {
+  std::vector<fs::path> files;
+  for (const auto& [shotPath, slot] : shots_) {
+    const Document* doc = slot.doc ? &*slot.doc : (lent_ == shotPath ? lentShot : nullptr);
+    if (doc && doc->dirty()) files.push_back(shotPath);
+  }
+  if (layoutDirty()) files.push_back(path_);
+  return files;
+}
+
 Document* Building::shot(const fs::path& shotPath) {
   auto it = shots_.find(shotPath);
   return it != shots_.end() && it->second.doc ? &*it->second.doc : nullptr;

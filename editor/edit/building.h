@@ -40,6 +40,9 @@ class Building {
   bool layoutDirty() const { return !saved_ || !sameLayout(*saved_, layout_); }
   // Any unsaved change, the layout's or a shot's.
   bool dirty() const;
+  // The files save() would write for unsaved changes: each shot with them (`lentShot`,
+  // the lent shot as it is now, counts for the lent one), then the layout.
+  std::vector<std::filesystem::path> unsavedFiles(const Document* lentShot) const;
 
   // The shots, by the path the layout names them with (LayoutEntry::shot). A shot
   // lent to the shot editor (lend) is not here until it is given back.

@@ -68,7 +68,6 @@ void BuildingMode::openLayout(app::Shell& shell, const fs::path& path) {
   openError_.clear();
   selected_.clear();
   drag_.reset();
-  discardOnDrop_.reset();
   editor_.setPlanMode(kName);
   for (size_t i = 0; i < building_->layout().corridors.size(); ++i) {
     const std::string problem = building_->problem(int(i));
@@ -172,9 +171,12 @@ void BuildingMode::onInput(app::Shell& shell, const app::InputEvent& event) {
                         [&](const app::MouseButtonEvent& e) { onButton(e); },
                         [&](const app::CursorEvent& e) { onCursor(e.positionPx); },
                         [&](const app::ScrollEvent& e) {
-                          if (building_ && overPlan(cursorPx_) && e.offset.y != 0) zoomAbout(cursorPx_, e.offset.y);
+                          if (building_ && !question_ && overPlan(cursorPx_) && e.offset.y != 0) zoomAbout(cursorPx_, e.offset.y);
                         },
-                        [&](const app::DropEvent& e) { onDrop(shell, e); }, [](const auto&) {}},
+                        [&](const app::DropEvent& e) {
+                          if (!question_) onDrop(shell, e);
+                        },
+                        [](const auto&) {}},
              event);
 }
 
@@ -182,6 +184,7 @@ void BuildingMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
   if (e.key < 0 || e.key > GLFW_KEY_LAST) return;
   keys_[e.key] = e.down;
   if (!e.down) return;
+  if (onQuestionKey(shell, e)) return;
   if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;  // typing into a panel's field
   if (!building_) return;
   const bool ctrl = ctrlHeld() || (e.mods & GLFW_MOD_CONTROL);
@@ -234,7 +237,7 @@ void BuildingMode::onButton(const app::MouseButtonEvent& e) {
     if (panFrom_ && e.button == panButton_) panFrom_.reset();
     return;
   }
-  if (!building_ || drag_ || panFrom_ || !overPlan(cursorPx_)) return;
+  if (!building_ || drag_ || panFrom_ || question_ || !overPlan(cursorPx_)) return;
   if (e.button == GLFW_MOUSE_BUTTON_MIDDLE || e.button == GLFW_MOUSE_BUTTON_RIGHT) {
     panFrom_ = cursorPx_;
     panButton_ = e.button;
@@ -423,12 +426,9 @@ void BuildingMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
 
 void BuildingMode::openFromEditor(app::Shell& shell, const fs::path& path) {
   const Document* shot = editor_.document();
-  const bool unsaved = dirty() || (shot && shot->dirty());
-  if (unsaved && discardOnDrop_ != path) {
-    discardOnDrop_ = path;
-    const fs::path where = dirty() ? building_->path() : shot->path();
-    shell.showMessage("unsaved changes in " + where.string() + ": Ctrl+S saves them; drop " +
-                      path.filename().string() + " again to open it and discard them");
+  if (dirty() || (shot && shot->dirty())) {
+    ask(shell, path);
+    shell.requestMode(kName);
     return;
   }
   openLayout(shell, path);
@@ -452,6 +452,7 @@ void BuildingMode::traceRow(app::TraceRow& row) const {
   if (!building_) {
     row.add("building", ordered_json(nullptr));
     editor_.addDocumentTrace(row);
+    traceQuestion(row);
     return;
   }
   const Layout& layout = building_->layout();
@@ -475,6 +476,7 @@ void BuildingMode::traceRow(app::TraceRow& row) const {
                         {"error", planError_.empty() ? ordered_json(nullptr) : ordered_json(planError_)}};
   row.add("building", building);
   editor_.addDocumentTrace(row);
+  traceQuestion(row);
 }
 
 app::FrameContent BuildingMode::frame(app::Shell&) {

@@ -37,15 +37,20 @@ class BuildingMode : public app::AppMode {
   // it; a failure is a message in the window. Unsaved changes of a building open
   // before are dropped: ask first (dirty()).
   void openLayout(app::Shell& shell, const std::filesystem::path& path);
-  // A layout opened from the shot editor (a drop): asks first when the building or the
-  // editor's shot has unsaved changes (the same file again: discard them), then opens
-  // it and shows the plan.
+  // A layout opened from the shot editor or dropped on the plan: when the building or
+  // the editor's shot has unsaved changes, asks first (Save all / Discard / Cancel, in
+  // this mode), then opens it and shows the plan.
   void openFromEditor(app::Shell& shell, const std::filesystem::path& path);
+  // The shot editor's close (EditMode::setCloseAsker): when its shot is the building's
+  // and the building has unsaved changes (that shot's or any other), the question is
+  // asked here, this mode becoming the active one. True: it asks (the window stays).
+  bool askBeforeEditorCloses(app::Shell& shell);
   bool hasBuilding() const { return building_.has_value(); }
   bool dirty() const;
 
   std::string_view name() const override { return kName; }
   Status open(app::Shell& shell) override;
+  bool onCloseRequest(app::Shell& shell) override;  // asks first when dirty()
   void onEnter(app::Shell& shell) override;
   void onLeave(app::Shell& shell) override;
   void onInput(app::Shell& shell, const app::InputEvent& event) override;
@@ -102,6 +107,21 @@ class BuildingMode : public app::AppMode {
   const Document* lentShot() const;
   void reconcileLent(app::Shell& shell);
 
+  // building_question.cpp: the Save all / Discard / Cancel question before unsaved
+  // changes (the layout's, its shots', the editor's shot) would be lost.
+  struct Question {
+    std::optional<std::filesystem::path> open;  // the layout to open then; unset: closing
+    bool backToEditor = false;                  // asked from the shot editor: Cancel goes back
+  };
+  void ask(app::Shell& shell, std::optional<std::filesystem::path> open);
+  void answer(app::Shell& shell, int answer);  // 0 save all, 1 discard, 2 cancel
+  bool onQuestionKey(app::Shell& shell, const app::KeyEvent& event);  // true: the question is up
+  std::vector<std::filesystem::path> unsavedFiles() const;
+  const Document* foreignShot() const;  // the editor's shot when it is not the building's
+  void drawQuestion(app::Shell& shell);
+  bool questionButton(const char* label, const std::string& name);
+  void traceQuestion(app::TraceRow& row) const;
+
   // building_panel.cpp: the side panel and the plan's drawing.
   void drawPanel(app::Shell& shell);
   void drawCorridorList(app::Shell& shell);
@@ -134,7 +154,8 @@ class BuildingMode : public app::AppMode {
   glm::dvec2 cursorPx_{-1.0};
   std::array<bool, GLFW_KEY_LAST + 1> keys_{};
   std::string addPath_;  // the panel's "add a shot or photo" field
-  std::optional<std::filesystem::path> discardOnDrop_;
+  std::optional<Question> question_;
+  std::vector<std::pair<std::string, WindowRect>> questionButtons_;  // as last drawn, for the trace
   unsigned activeField_ = 0;
   double activeFieldValue_ = 0;
 };

@@ -61,6 +61,7 @@ void BuildingMode::drawUi(app::Shell& shell) {
   uiRects_.clear();
   if (building_) drawPlan();
   drawPanel(shell);
+  drawQuestion(shell);
 }
 
 void BuildingMode::drawPanel(app::Shell& shell) {
