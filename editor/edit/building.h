@@ -24,6 +24,14 @@
 
 namespace pw::edit {
 
+// The whole building's model from shots already measured (one per corridor of
+// `layout`, in its order), titled `title`: what Building::buildModel makes (W walks
+// it) and building mode's 3D preview builds on its worker thread. Any thread.
+// Errors: modeling::buildModel's.
+Result<modeling::BuiltModel> buildBuildingModel(const modeling::Layout& layout,
+                                                const std::vector<modeling::MeasuredShot>& shots,
+                                                const modeling::ModelOptions& options, const std::string& title);
+
 // True for a JSON file with a "corridors" array (a layout, not a shot file).
 bool isLayoutFile(const std::filesystem::path& path);
 

@@ -113,6 +113,11 @@ void BuildingMode::layOut(app::Shell& shell) {
   const double width = windowSize_.x;
   panelWidthPx_ = std::floor(std::min(std::clamp(0.3 * width, 260.0, 380.0), 0.6 * width));
   planArea_ = {{0.0, 0.0}, {std::max(1.0, width - panelWidthPx_), std::max(1.0, double(windowSize_.y))}};
+  // The 3D preview: the lower part of the panel's column.
+  const double height = windowSize_.y;
+  const double paneHeight = building_ ? std::floor(std::min(0.75 * panelWidthPx_, 0.4 * height)) : 0.0;
+  panelHeightPx_ = std::max(0.0, height - paneHeight);
+  preview_.setRect(paneHeight > 0 ? WindowRect{{width - panelWidthPx_, height - paneHeight}, {width, height}} : WindowRect{});
   if (resized && !viewTouched_) fit();
 }
 
@@ -139,6 +144,7 @@ void BuildingMode::onEnter(app::Shell& shell) {
 
 void BuildingMode::onLeave(app::Shell&) {
   if (drag_) endDrag(true);
+  preview_.endOrbit();
   panFrom_.reset();
   keys_.fill(false);
 }
@@ -167,6 +173,10 @@ std::optional<glm::dvec2> BuildingMode::turnHandle(int i) const {
 
 void BuildingMode::onInput(app::Shell& shell, const app::InputEvent& event) {
   layOut(shell);
+  if (!question_ && !drag_ && !panFrom_ && preview_.onInput(event)) {  // an orbit or the wheel over the 3D preview
+    if (const auto* cursor = std::get_if<app::CursorEvent>(&event)) cursorPx_ = cursor->positionPx;
+    return;
+  }
   std::visit(Overloaded{[&](const app::KeyEvent& e) { onKey(shell, e); },
                         [&](const app::MouseButtonEvent& e) { onButton(e); },
                         [&](const app::CursorEvent& e) { onCursor(e.positionPx); },
@@ -445,6 +455,32 @@ void BuildingMode::update(app::Shell& shell, double) {
   }
   auto plan = modeling::planBuilding(building_->layout(), boxes_);
   planError_ = plan ? std::string() : plan.message();
+  updatePreview(shell);
+}
+
+void BuildingMode::updatePreview(app::Shell& shell) {
+  preview_.update(shell);
+  previewCurrent_ = false;
+  if (!building_ || drag_) return;  // a drag's steps are not built: its release is
+  auto shots = building_->measuredShots(lentShot());
+  if (!shots) {
+    preview_.cannotBuild(shots.message());
+    return;
+  }
+  if (!planError_.empty()) {
+    preview_.cannotBuild(planError_);
+    return;
+  }
+  previewCurrent_ = preview_.showsCurrent(building_->layout(), *shots);
+  preview_.ask(building_->layout(), std::move(*shots), building_->path().stem().string());
+}
+
+Status BuildingMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
+  if (!std::any_cast<PreviewWaitEvent>(&event.value)) return AppMode::onReplayEvent(shell, event);
+  if (!building_) return makeError("preview-wait: no layout is open");
+  update(shell, 0.0);  // asks for the building as it is now
+  if (Status waited = preview_.waitIdle(shell, 120.0); !waited) return makeError("preview-wait: " + waited.message());
+  return {};
 }
 
 void BuildingMode::traceRow(app::TraceRow& row) const {
@@ -477,11 +513,15 @@ void BuildingMode::traceRow(app::TraceRow& row) const {
   row.add("building", building);
   editor_.addDocumentTrace(row);
   traceQuestion(row);
+  row.add("preview", preview_.trace(previewCurrent_));
 }
 
 app::FrameContent BuildingMode::frame(app::Shell&) {
   app::FrameContent content;
   content.clearColor = glm::vec3(0.12f, 0.13f, 0.15f);
+  if (building_) {
+    if (const std::optional<engine::SceneView> model = preview_.view()) content.views.push_back(*model);
+  }
   return content;
 }
 

@@ -18,6 +18,7 @@
 
 #include "editor/app/app_mode.h"
 #include "editor/edit/building.h"
+#include "editor/edit/building_preview.h"
 #include "editor/edit/canvas.h"
 #include "editor/edit/plan.h"
 
@@ -54,6 +55,7 @@ class BuildingMode : public app::AppMode {
   void onEnter(app::Shell& shell) override;
   void onLeave(app::Shell& shell) override;
   void onInput(app::Shell& shell, const app::InputEvent& event) override;
+  Status onReplayEvent(app::Shell& shell, const app::ModeEvent& event) override;  // preview-wait
   void update(app::Shell& shell, double stepS) override;
   void traceRow(app::TraceRow& row) const override;
   void drawUi(app::Shell& shell) override;
@@ -73,6 +75,7 @@ class BuildingMode : public app::AppMode {
   };
 
   void layOut(app::Shell& shell);
+  void updatePreview(app::Shell& shell);  // swaps a finished model in; asks for the building as it is
   void onKey(app::Shell& shell, const app::KeyEvent& event);
   void onButton(const app::MouseButtonEvent& event);
   void onCursor(const glm::dvec2& positionPx);
@@ -142,7 +145,10 @@ class BuildingMode : public app::AppMode {
 
   glm::ivec2 windowSize_{0};
   double panelWidthPx_ = 0;
+  double panelHeightPx_ = 0;  // the side panel, above the 3D preview
   WindowRect planArea_;
+  BuildingPreview preview_;     // the whole building in 3D, under the panel
+  bool previewCurrent_ = false;  // it shows the building as it is now
   PlanTransform view_;
   bool viewTouched_ = false;  // zoomed or panned: a resize keeps the view
   std::vector<WindowRect> uiRects_;

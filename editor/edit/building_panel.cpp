@@ -61,12 +61,13 @@ void BuildingMode::drawUi(app::Shell& shell) {
   uiRects_.clear();
   if (building_) drawPlan();
   drawPanel(shell);
+  if (building_) preview_.drawUi();
   drawQuestion(shell);
 }
 
 void BuildingMode::drawPanel(app::Shell& shell) {
   ImGui::SetNextWindowPos({float(windowSize_.x - panelWidthPx_), 0.0f}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({float(panelWidthPx_), float(windowSize_.y)}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({float(panelWidthPx_), float(panelHeightPx_)}, ImGuiCond_Always);
   ImGui::Begin("photowalk building", nullptr, kFixedWindow);
   uiRects_.push_back(currentWindowRect());
   if (!building_) {

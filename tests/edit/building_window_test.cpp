@@ -377,6 +377,56 @@ TEST_F(Building, ALayoutDroppedOverUnsavedChangesAsksFirst) {
   EXPECT_FALSE(rows[32].raw["building"]["dirty"].get<bool>());
 }
 
+TEST_F(Building, ThePreviewPaneShowsTheWholeBuildingRebuiltWhenAnEditIsReleasedNotDuringTheDrag) {
+  const fs::path layout = layoutCopy("pane");
+  const auto probe = edit("pane-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  const PlanView view = planView(probe.back());
+  const json& corridors = probe.back().raw.at("building").at("corridors");
+  const glm::dvec2 hallSize = vec2(corridors[0]["size_m"]), wingNear = vec2(corridors[1]["position"]);
+  // The first model, then the wing dragged onto the hall's far wall (as above), released.
+  const glm::dvec2 target(0.1, -hallSize.y + 0.12);
+  const glm::dvec2 grab = view.toWindow(wingNear + glm::dvec2(0, -2));
+  const glm::dvec2 by = view.scale * (target - wingNear);
+  Script s;
+  s.at(1, "preview-wait").at(2, "capture pane_before.png").move(2, grab).at(3, "mouse left down");
+  for (int i = 1; i <= 6; ++i) s.move(3 + i, grab + by * (i / 6.0));
+  s.at(11, "mouse left up").at(13, "preview-wait").at(13, "capture pane_after.png").at(15, "quit");
+  const auto rows = edit("pane", layout, s.str());
+  ASSERT_GE(rows.size(), 15u);
+  const auto preview = [&](int frame) { return rows[frame].raw.at("preview"); };
+  EXPECT_TRUE(preview(1)["model"].get<bool>()) << preview(1).dump();
+  EXPECT_TRUE(preview(1)["current"].get<bool>());
+  EXPECT_TRUE(preview(1)["error"].is_null()) << preview(1).dump();
+  for (int f = 4; f <= 10; ++f) {  // dragging: nothing is built
+    EXPECT_FALSE(preview(f)["current"].get<bool>()) << "frame " << f;
+    EXPECT_FALSE(preview(f)["building"].get<bool>()) << "frame " << f;
+  }
+  EXPECT_TRUE(rows[11].raw["building"]["corridors"][1]["attach"].is_object());
+  EXPECT_TRUE(preview(11)["building"].get<bool>());  // released: the new layout is being built
+  EXPECT_TRUE(preview(13)["current"].get<bool>()) << preview(13).dump();
+  EXPECT_FALSE(preview(13)["building"].get<bool>());
+  EXPECT_EQ(preview(13)["camera"], "overview");
+
+  // The pane in the capture: the model, not its background (0.13, 0.14, 0.16).
+  const json rect = preview(13).at("rect");
+  ASSERT_GT(rect[2].get<double>(), 100);
+  ASSERT_GT(rect[3].get<double>(), 100);
+  for (const char* picture : {"pane_before.png", "pane_after.png"}) {
+    auto frame = engine::loadImage(dir_ / picture);
+    ASSERT_TRUE(frame.ok()) << frame.message();
+    int model = 0, all = 0;
+    for (int y = int(rect[1]) + 20; y < int(rect[1]) + int(rect[3]) - 2; y += 3) {
+      for (int x = int(rect[0]) + 2; x < int(rect[0]) + int(rect[2]) - 2; x += 3) {
+        const auto p = frame->pixel(x, y);
+        ++all;
+        if (std::abs(int(p[0]) - 33) + std::abs(int(p[1]) - 36) + std::abs(int(p[2]) - 41) > 24) ++model;
+      }
+    }
+    EXPECT_GT(model, all / 10) << picture << ": " << model << " of " << all << " pixels are the model's";
+  }
+}
+
 TEST_F(Building, ALayoutThatCannotBeReadOrBuiltIsAMessageAndTheWindowStays) {
   const fs::path bad = dir_ / "bad.json";
   std::ofstream(bad) << R"({"corridors": [{"name": "hall", "shot": "corridor_b.json"},
