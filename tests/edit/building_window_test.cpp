@@ -391,9 +391,14 @@ TEST_F(Building, ThePreviewPaneShowsTheWholeBuildingRebuiltWhenAnEditIsReleasedN
   Script s;
   s.at(1, "preview-wait").at(2, "capture pane_before.png").move(2, grab).at(3, "mouse left down");
   for (int i = 1; i <= 6; ++i) s.move(3 + i, grab + by * (i / 6.0));
-  s.at(11, "mouse left up").at(13, "preview-wait").at(13, "capture pane_after.png").at(15, "quit");
+  s.at(11, "mouse left up").at(13, "preview-wait").at(13, "capture pane_after.png");
+  // A left drag over the pane orbits it (the plan stays as it is).
+  const json paneRect = probe.back().raw.at("preview").at("rect");
+  const glm::dvec2 paneCentre(double(paneRect[0]) + 0.5 * double(paneRect[2]), double(paneRect[1]) + 0.5 * double(paneRect[3]));
+  s.move(15, paneCentre).at(16, "mouse left down").move(17, paneCentre + glm::dvec2(40, 10)).at(18, "mouse left up");
+  s.at(20, "quit");
   const auto rows = edit("pane", layout, s.str());
-  ASSERT_GE(rows.size(), 15u);
+  ASSERT_GE(rows.size(), 20u);
   const auto preview = [&](int frame) { return rows[frame].raw.at("preview"); };
   EXPECT_TRUE(preview(1)["model"].get<bool>()) << preview(1).dump();
   EXPECT_TRUE(preview(1)["current"].get<bool>());
@@ -407,6 +412,9 @@ TEST_F(Building, ThePreviewPaneShowsTheWholeBuildingRebuiltWhenAnEditIsReleasedN
   EXPECT_TRUE(preview(13)["current"].get<bool>()) << preview(13).dump();
   EXPECT_FALSE(preview(13)["building"].get<bool>());
   EXPECT_EQ(preview(13)["camera"], "overview");
+  EXPECT_EQ(preview(19)["camera"], "orbit");
+  EXPECT_EQ(rows[19].raw["building"]["corridors"], rows[13].raw["building"]["corridors"]);
+  EXPECT_TRUE(preview(19)["current"].get<bool>());
 
   // The pane in the capture: the model, not its background (0.13, 0.14, 0.16).
   const json rect = preview(13).at("rect");
