@@ -42,9 +42,10 @@ class BuildingMode : public app::AppMode {
   // the editor's shot has unsaved changes, asks first (Save all / Discard / Cancel, in
   // this mode), then opens it and shows the plan.
   void openFromEditor(app::Shell& shell, const std::filesystem::path& path);
-  // The shot editor's close (EditMode::setCloseAsker): when its shot is the building's
-  // and the building has unsaved changes (that shot's or any other), the question is
-  // asked here, this mode becoming the active one. True: it asks (the window stays).
+  // The shot editor's close (EditMode::setCloseAsker): when the building has unsaved
+  // changes (the shot lent to the editor's or any other), the question is asked here,
+  // about them and the editor's own shot, this mode becoming the active one. True: it
+  // asks (the window stays).
   bool askBeforeEditorCloses(app::Shell& shell);
   bool hasBuilding() const { return building_.has_value(); }
   bool dirty() const;

@@ -47,7 +47,9 @@ bool BuildingMode::onCloseRequest(app::Shell& shell) {
 }
 
 bool BuildingMode::askBeforeEditorCloses(app::Shell& shell) {
-  if (!building_ || !lentShot() || !dirty()) return false;
+  // The building's changes (its shot in the editor's among them): asked here, with the
+  // editor's own shot when it is another file, so that one answer covers them all.
+  if (!building_ || !dirty()) return false;
   ask(shell, std::nullopt);
   question_->backToEditor = true;
   shell.requestMode(kName);

@@ -361,6 +361,35 @@ TEST_F(Building, ClosingFromTheShotEditorAsksAboutTheWholeBuildingAndDiscardWrit
   EXPECT_EQ(*readFile(dir_ / "corridor_a.json"), wingBytes);
 }
 
+TEST_F(Building, ClosingWithAnotherShotEditedInTheEditorAsksOnceForItAndTheBuilding) {
+  const fs::path layout = layoutCopy("other-close");
+  const fs::path other = dir_ / "other_shot.json";
+  fs::copy_file(dir_ / "corridor_a.json", other, fs::copy_options::overwrite_existing);
+  const auto probe = edit("other-close-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  const double wingX = vec2(probe.back().raw.at("building").at("corridors").at(1).at("position")).x;
+  // The wing moved; in the shot editor another shot file (not the building's) opened
+  // and its P3 nudged up 2 px; the close asks about both in the plan; S saves both.
+  Script s = movedWing(probe.back());
+  s.key(10, "E").at(12, "drop " + other.string());
+  s.at(14, "key LEFT_ALT down").key(14, "3").at(14, "key LEFT_ALT up").key(15, "UP").key(16, "UP");
+  s.at(18, "close").key(24, "S").at(60, "quit");
+  const auto rows = edit("other-close", layout, s.str());
+  ASSERT_GE(rows.size(), 24u);
+  EXPECT_EQ(rows[17].mode, "edit");
+  EXPECT_EQ(fs::path(rows[17].path.value_or("")), other);
+  EXPECT_TRUE(rows[17].dirty);
+  const double p3y = rows[17].corners.at(2).y;
+  EXPECT_EQ(rows[20].mode, "building");
+  ASSERT_TRUE(question(rows[20]).is_object()) << rows[20].raw.dump();
+  EXPECT_EQ(question(rows[20])["files"].size(), 2u) << question(rows[20]).dump();
+  EXPECT_LT(rows.back().frame, 30) << "Save all closes the window";
+  const json file = json::parse(*readFile(layout));
+  EXPECT_NEAR(file["corridors"][1]["position"][0].get<double>(), wingX + 2, 1e-9);
+  const json shot = json::parse(*readFile(other));
+  EXPECT_NEAR(shot["corners_px"]["P3"][1].get<double>(), p3y, 1e-9);
+}
+
 TEST_F(Building, ALayoutDroppedOverUnsavedChangesAsksFirst) {
   const fs::path layout = layoutCopy("drop-over"), other = layoutCopy("drop-other");
   const auto probe = edit("drop-over-probe", layout, "1 quit\n");
