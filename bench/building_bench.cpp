@@ -6,7 +6,10 @@
 //    their photos, two measurements), against opening one of its shots alone;
 //  - W in the plan: the whole building's model from the shots in memory
 //    (Building::buildModel: modeling::buildModel), against one corridor's (buildCorridorScene, the shot
-//    editor's W).
+//    editor's W);
+//  - building mode's 3D preview pane: the same model with the preview's reduced texture
+//    budget (buildBuildingModel, what its worker thread builds before staging it),
+//    against W's.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +19,7 @@
 #include "editor/edit/building.h"
 #include "editor/edit/model_walk.h"
 #include "editor/edit/plan.h"
+#include "editor/edit/preview_build.h"
 #include "tests/support/groundtruth.h"
 
 namespace {
@@ -105,5 +109,8 @@ int main() {
   });
   const double whole = bench::medianMs(kRuns, [&] { (void)building->buildModel(nullptr); });
   std::printf("W in the plan, the building's model: %.1f ms (baseline, one corridor's: %.1f ms)\n", whole, single);
+  const modeling::ModelOptions reduced = previewModelOptions(PreviewResolution::kReduced);
+  const double pane = bench::medianMs(kRuns, [&] { (void)buildBuildingModel(building->layout(), *shots, reduced, "b"); });
+  std::printf("the plan's 3D preview, the building's reduced model: %.1f ms (baseline, W's: %.1f ms)\n", pane, whole);
   return 0;
 }

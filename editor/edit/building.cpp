@@ -21,6 +21,14 @@ const std::string kNoProblem;
 
 }  // namespace
 
+Result<modeling::BuiltModel> buildBuildingModel(const Layout& layout, const std::vector<modeling::MeasuredShot>& shots,
+                                                const modeling::ModelOptions& options, const std::string& title) {
+  auto model = modeling::buildModel(layout, shots, options);
+  if (!model) return model.error();
+  model->scene.title = title;
+  return model;
+}
+
 bool isLayoutFile(const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -52,6 +60,16 @@ Result<Building> Building::open(const fs::path& path) {
 bool Building::dirty() const {
   if (layoutDirty()) return true;
   return std::any_of(shots_.begin(), shots_.end(), [](const auto& s) { return s.second.doc && s.second.doc->dirty(); });
+}
+
+std::vector<fs::path> Building::unsavedFiles(const Document* lentShot) const {
+  std::vector<fs::path> files;
+  for (const auto& [shotPath, slot] : shots_) {
+    const Document* doc = slot.doc ? &*slot.doc : (lent_ == shotPath ? lentShot : nullptr);
+    if (doc && doc->dirty()) files.push_back(shotPath);
+  }
+  if (layoutDirty()) files.push_back(path_);
+  return files;
 }
 
 Document* Building::shot(const fs::path& shotPath) {
@@ -144,10 +162,7 @@ Result<std::vector<modeling::MeasuredShot>> Building::measuredShots(const Docume
 Result<modeling::BuiltModel> Building::buildModel(const Document* lentShot) const {
   auto shots = measuredShots(lentShot);
   if (!shots) return shots.error();
-  auto model = modeling::buildModel(layout_, *shots, modeling::ModelOptions{});
-  if (!model) return model.error();
-  model->scene.title = path_.stem().string();
-  return model;
+  return buildBuildingModel(layout_, *shots, modeling::ModelOptions{}, path_.stem().string());
 }
 
 void Building::push(Step step) {

@@ -24,6 +24,14 @@
 
 namespace pw::edit {
 
+// The whole building's model from shots already measured (one per corridor of
+// `layout`, in its order), titled `title`: what Building::buildModel makes (W walks
+// it) and building mode's 3D preview builds on its worker thread. Any thread.
+// Errors: modeling::buildModel's.
+Result<modeling::BuiltModel> buildBuildingModel(const modeling::Layout& layout,
+                                                const std::vector<modeling::MeasuredShot>& shots,
+                                                const modeling::ModelOptions& options, const std::string& title);
+
 // True for a JSON file with a "corridors" array (a layout, not a shot file).
 bool isLayoutFile(const std::filesystem::path& path);
 
@@ -40,6 +48,9 @@ class Building {
   bool layoutDirty() const { return !saved_ || !sameLayout(*saved_, layout_); }
   // Any unsaved change, the layout's or a shot's.
   bool dirty() const;
+  // The files save() would write for unsaved changes: each shot with them (`lentShot`,
+  // the lent shot as it is now, counts for the lent one), then the layout.
+  std::vector<std::filesystem::path> unsavedFiles(const Document* lentShot) const;
 
   // The shots, by the path the layout names them with (LayoutEntry::shot). A shot
   // lent to the shot editor (lend) is not here until it is given back.

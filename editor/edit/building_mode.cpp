@@ -68,7 +68,6 @@ void BuildingMode::openLayout(app::Shell& shell, const fs::path& path) {
   openError_.clear();
   selected_.clear();
   drag_.reset();
-  discardOnDrop_.reset();
   editor_.setPlanMode(kName);
   for (size_t i = 0; i < building_->layout().corridors.size(); ++i) {
     const std::string problem = building_->problem(int(i));
@@ -114,6 +113,11 @@ void BuildingMode::layOut(app::Shell& shell) {
   const double width = windowSize_.x;
   panelWidthPx_ = std::floor(std::min(std::clamp(0.3 * width, 260.0, 380.0), 0.6 * width));
   planArea_ = {{0.0, 0.0}, {std::max(1.0, width - panelWidthPx_), std::max(1.0, double(windowSize_.y))}};
+  // The 3D preview: the lower part of the panel's column.
+  const double height = windowSize_.y;
+  const double paneHeight = building_ ? std::floor(std::min(0.75 * panelWidthPx_, 0.4 * height)) : 0.0;
+  panelHeightPx_ = std::max(0.0, height - paneHeight);
+  preview_.setRect(paneHeight > 0 ? WindowRect{{width - panelWidthPx_, height - paneHeight}, {width, height}} : WindowRect{});
   if (resized && !viewTouched_) fit();
 }
 
@@ -140,6 +144,7 @@ void BuildingMode::onEnter(app::Shell& shell) {
 
 void BuildingMode::onLeave(app::Shell&) {
   if (drag_) endDrag(true);
+  preview_.endOrbit();
   panFrom_.reset();
   keys_.fill(false);
 }
@@ -168,13 +173,20 @@ std::optional<glm::dvec2> BuildingMode::turnHandle(int i) const {
 
 void BuildingMode::onInput(app::Shell& shell, const app::InputEvent& event) {
   layOut(shell);
+  if (!question_ && !drag_ && !panFrom_ && preview_.onInput(event)) {  // an orbit or the wheel over the 3D preview
+    if (const auto* cursor = std::get_if<app::CursorEvent>(&event)) cursorPx_ = cursor->positionPx;
+    return;
+  }
   std::visit(Overloaded{[&](const app::KeyEvent& e) { onKey(shell, e); },
                         [&](const app::MouseButtonEvent& e) { onButton(e); },
                         [&](const app::CursorEvent& e) { onCursor(e.positionPx); },
                         [&](const app::ScrollEvent& e) {
-                          if (building_ && overPlan(cursorPx_) && e.offset.y != 0) zoomAbout(cursorPx_, e.offset.y);
+                          if (building_ && !question_ && overPlan(cursorPx_) && e.offset.y != 0) zoomAbout(cursorPx_, e.offset.y);
                         },
-                        [&](const app::DropEvent& e) { onDrop(shell, e); }, [](const auto&) {}},
+                        [&](const app::DropEvent& e) {
+                          if (!question_) onDrop(shell, e);
+                        },
+                        [](const auto&) {}},
              event);
 }
 
@@ -182,6 +194,7 @@ void BuildingMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
   if (e.key < 0 || e.key > GLFW_KEY_LAST) return;
   keys_[e.key] = e.down;
   if (!e.down) return;
+  if (onQuestionKey(shell, e)) return;
   if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;  // typing into a panel's field
   if (!building_) return;
   const bool ctrl = ctrlHeld() || (e.mods & GLFW_MOD_CONTROL);
@@ -234,7 +247,7 @@ void BuildingMode::onButton(const app::MouseButtonEvent& e) {
     if (panFrom_ && e.button == panButton_) panFrom_.reset();
     return;
   }
-  if (!building_ || drag_ || panFrom_ || !overPlan(cursorPx_)) return;
+  if (!building_ || drag_ || panFrom_ || question_ || !overPlan(cursorPx_)) return;
   if (e.button == GLFW_MOUSE_BUTTON_MIDDLE || e.button == GLFW_MOUSE_BUTTON_RIGHT) {
     panFrom_ = cursorPx_;
     panButton_ = e.button;
@@ -423,12 +436,9 @@ void BuildingMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
 
 void BuildingMode::openFromEditor(app::Shell& shell, const fs::path& path) {
   const Document* shot = editor_.document();
-  const bool unsaved = dirty() || (shot && shot->dirty());
-  if (unsaved && discardOnDrop_ != path) {
-    discardOnDrop_ = path;
-    const fs::path where = dirty() ? building_->path() : shot->path();
-    shell.showMessage("unsaved changes in " + where.string() + ": Ctrl+S saves them; drop " +
-                      path.filename().string() + " again to open it and discard them");
+  if (dirty() || (shot && shot->dirty())) {
+    ask(shell, path);
+    shell.requestMode(kName);
     return;
   }
   openLayout(shell, path);
@@ -445,6 +455,32 @@ void BuildingMode::update(app::Shell& shell, double) {
   }
   auto plan = modeling::planBuilding(building_->layout(), boxes_);
   planError_ = plan ? std::string() : plan.message();
+  updatePreview(shell);
+}
+
+void BuildingMode::updatePreview(app::Shell& shell) {
+  preview_.update(shell);
+  previewCurrent_ = false;
+  if (!building_ || drag_) return;  // a drag's steps are not built: its release is
+  auto shots = building_->measuredShots(lentShot());
+  if (!shots) {
+    preview_.cannotBuild(shots.message());
+    return;
+  }
+  if (!planError_.empty()) {
+    preview_.cannotBuild(planError_);
+    return;
+  }
+  previewCurrent_ = preview_.showsCurrent(building_->layout(), *shots);
+  preview_.ask(building_->layout(), std::move(*shots), building_->path().stem().string());
+}
+
+Status BuildingMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
+  if (!std::any_cast<PreviewWaitEvent>(&event.value)) return AppMode::onReplayEvent(shell, event);
+  if (!building_) return makeError("preview-wait: no layout is open");
+  update(shell, 0.0);  // asks for the building as it is now
+  if (Status waited = preview_.waitIdle(shell, 120.0); !waited) return makeError("preview-wait: " + waited.message());
+  return {};
 }
 
 void BuildingMode::traceRow(app::TraceRow& row) const {
@@ -452,6 +488,7 @@ void BuildingMode::traceRow(app::TraceRow& row) const {
   if (!building_) {
     row.add("building", ordered_json(nullptr));
     editor_.addDocumentTrace(row);
+    traceQuestion(row);
     return;
   }
   const Layout& layout = building_->layout();
@@ -475,11 +512,16 @@ void BuildingMode::traceRow(app::TraceRow& row) const {
                         {"error", planError_.empty() ? ordered_json(nullptr) : ordered_json(planError_)}};
   row.add("building", building);
   editor_.addDocumentTrace(row);
+  traceQuestion(row);
+  row.add("preview", preview_.trace(previewCurrent_));
 }
 
 app::FrameContent BuildingMode::frame(app::Shell&) {
   app::FrameContent content;
   content.clearColor = glm::vec3(0.12f, 0.13f, 0.15f);
+  if (building_) {
+    if (const std::optional<engine::SceneView> model = preview_.view()) content.views.push_back(*model);
+  }
   return content;
 }
 

@@ -18,6 +18,7 @@
 
 #include "editor/app/app_mode.h"
 #include "editor/edit/building.h"
+#include "editor/edit/building_preview.h"
 #include "editor/edit/canvas.h"
 #include "editor/edit/plan.h"
 
@@ -37,18 +38,25 @@ class BuildingMode : public app::AppMode {
   // it; a failure is a message in the window. Unsaved changes of a building open
   // before are dropped: ask first (dirty()).
   void openLayout(app::Shell& shell, const std::filesystem::path& path);
-  // A layout opened from the shot editor (a drop): asks first when the building or the
-  // editor's shot has unsaved changes (the same file again: discard them), then opens
-  // it and shows the plan.
+  // A layout opened from the shot editor or dropped on the plan: when the building or
+  // the editor's shot has unsaved changes, asks first (Save all / Discard / Cancel, in
+  // this mode), then opens it and shows the plan.
   void openFromEditor(app::Shell& shell, const std::filesystem::path& path);
+  // The shot editor's close (EditMode::setCloseAsker): when the building has unsaved
+  // changes (the shot lent to the editor's or any other), the question is asked here,
+  // about them and the editor's own shot, this mode becoming the active one. True: it
+  // asks (the window stays).
+  bool askBeforeEditorCloses(app::Shell& shell);
   bool hasBuilding() const { return building_.has_value(); }
   bool dirty() const;
 
   std::string_view name() const override { return kName; }
   Status open(app::Shell& shell) override;
+  bool onCloseRequest(app::Shell& shell) override;  // asks first when dirty()
   void onEnter(app::Shell& shell) override;
   void onLeave(app::Shell& shell) override;
   void onInput(app::Shell& shell, const app::InputEvent& event) override;
+  Status onReplayEvent(app::Shell& shell, const app::ModeEvent& event) override;  // preview-wait
   void update(app::Shell& shell, double stepS) override;
   void traceRow(app::TraceRow& row) const override;
   void drawUi(app::Shell& shell) override;
@@ -68,6 +76,7 @@ class BuildingMode : public app::AppMode {
   };
 
   void layOut(app::Shell& shell);
+  void updatePreview(app::Shell& shell);  // swaps a finished model in; asks for the building as it is
   void onKey(app::Shell& shell, const app::KeyEvent& event);
   void onButton(const app::MouseButtonEvent& event);
   void onCursor(const glm::dvec2& positionPx);
@@ -102,6 +111,21 @@ class BuildingMode : public app::AppMode {
   const Document* lentShot() const;
   void reconcileLent(app::Shell& shell);
 
+  // building_question.cpp: the Save all / Discard / Cancel question before unsaved
+  // changes (the layout's, its shots', the editor's shot) would be lost.
+  struct Question {
+    std::optional<std::filesystem::path> open;  // the layout to open then; unset: closing
+    bool backToEditor = false;                  // asked from the shot editor: Cancel goes back
+  };
+  void ask(app::Shell& shell, std::optional<std::filesystem::path> open);
+  void answer(app::Shell& shell, int answer);  // 0 save all, 1 discard, 2 cancel
+  bool onQuestionKey(app::Shell& shell, const app::KeyEvent& event);  // true: the question is up
+  std::vector<std::filesystem::path> unsavedFiles() const;
+  const Document* foreignShot() const;  // the editor's shot when it is not the building's
+  void drawQuestion(app::Shell& shell);
+  bool questionButton(const char* label, const std::string& name);
+  void traceQuestion(app::TraceRow& row) const;
+
   // building_panel.cpp: the side panel and the plan's drawing.
   void drawPanel(app::Shell& shell);
   void drawCorridorList(app::Shell& shell);
@@ -122,7 +146,10 @@ class BuildingMode : public app::AppMode {
 
   glm::ivec2 windowSize_{0};
   double panelWidthPx_ = 0;
+  double panelHeightPx_ = 0;  // the side panel, above the 3D preview
   WindowRect planArea_;
+  BuildingPreview preview_;     // the whole building in 3D, under the panel
+  bool previewCurrent_ = false;  // it shows the building as it is now
   PlanTransform view_;
   bool viewTouched_ = false;  // zoomed or panned: a resize keeps the view
   std::vector<WindowRect> uiRects_;
@@ -134,7 +161,8 @@ class BuildingMode : public app::AppMode {
   glm::dvec2 cursorPx_{-1.0};
   std::array<bool, GLFW_KEY_LAST + 1> keys_{};
   std::string addPath_;  // the panel's "add a shot or photo" field
-  std::optional<std::filesystem::path> discardOnDrop_;
+  std::optional<Question> question_;
+  std::vector<std::pair<std::string, WindowRect>> questionButtons_;  // as last drawn, for the trace
   unsigned activeField_ = 0;
   double activeFieldValue_ = 0;
 };

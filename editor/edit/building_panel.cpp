@@ -36,7 +36,8 @@ const char* const kPlanKeys =
     "Esc                   cancel a drag\n"
     "Ctrl+Z; Ctrl+Shift+Z, Ctrl+Y  undo; redo (plan edits)\n"
     "Ctrl+S                save the layout and its shots\n"
-    "W                     walk the whole building (Esc: back)";
+    "W                     walk the whole building (Esc: back)\n"
+    "drag, wheel on the 3D preview  orbit, nearer or farther";
 
 ImU32 colour(const glm::u8vec4& c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 ImVec2 im(const glm::dvec2& p) { return {float(p.x), float(p.y)}; }
@@ -61,11 +62,13 @@ void BuildingMode::drawUi(app::Shell& shell) {
   uiRects_.clear();
   if (building_) drawPlan();
   drawPanel(shell);
+  if (building_) preview_.drawUi();
+  drawQuestion(shell);
 }
 
 void BuildingMode::drawPanel(app::Shell& shell) {
   ImGui::SetNextWindowPos({float(windowSize_.x - panelWidthPx_), 0.0f}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({float(panelWidthPx_), float(windowSize_.y)}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({float(panelWidthPx_), float(panelHeightPx_)}, ImGuiCond_Always);
   ImGui::Begin("photowalk building", nullptr, kFixedWindow);
   uiRects_.push_back(currentWindowRect());
   if (!building_) {

@@ -86,6 +86,9 @@ class EditMode : public app::AppMode {
   void setLayoutOpener(std::function<void(app::Shell&, const std::filesystem::path&)> opener) {
     layoutOpener_ = std::move(opener);
   }
+  // Asked first when the window closes (building mode: true when the shot open is one
+  // of its building's and it asks about all the building's changes instead).
+  void setCloseAsker(std::function<bool(app::Shell&)> asker) { closeAsker_ = std::move(asker); }
 
  private:
   struct Drag {
@@ -203,6 +206,7 @@ class EditMode : public app::AppMode {
   std::string walkModelFrom_;  // the last W's model: "preview" (the preview's full one) or "built"
   std::string planMode_;     // building_mode.h's name while a building is open
   std::function<void(app::Shell&, const std::filesystem::path&)> layoutOpener_;
+  std::function<bool(app::Shell&)> closeAsker_;
 
   // The panel's field being typed into, and its text's value so far.
   unsigned activeField_ = 0;

@@ -48,6 +48,7 @@ Result<EditReport> runEditWindow(const EditWindowOptions& options) {
   edit.setLayoutOpener([&building](app::Shell& shell, const std::filesystem::path& path) {
     building.openFromEditor(shell, path);
   });
+  edit.setCloseAsker([&building](app::Shell& shell) { return building.askBeforeEditorCloses(shell); });
   PW_TRY((*shell)->addMode(edit));
   PW_TRY((*shell)->addMode(walk));
   PW_TRY((*shell)->addMode(building));

@@ -172,9 +172,10 @@ void EditMode::afterSave(app::Shell& shell) {
   }
 }
 
-bool EditMode::onCloseRequest(app::Shell&) {
+bool EditMode::onCloseRequest(app::Shell& shell) {
   if (drag_) endDrag(true);
   if (files_.recovered) return true;  // unanswered: the side file stays for the next start
+  if (closeAsker_ && closeAsker_(shell)) return false;
   if (doc_ && doc_->hasUnsavedEdits()) {
     files_.browser.reset();
     files_.unsaved = EditFiles::Unsaved{};

@@ -286,6 +286,184 @@ TEST_F(Building, CorridorsTurnByKeyAndHandleMoveFreeWithAltAndEachDragIsOneUndoS
   EXPECT_FALSE(rows[34].raw["building"]["dirty"].get<bool>());
 }
 
+// The wing carried 2 m right with Alt (no snapping): frames 2 to 8.
+Script movedWing(const Row& probe) {
+  const PlanView view = planView(probe);
+  const glm::dvec2 wingNear = vec2(probe.raw.at("building").at("corridors").at(1).at("position"));
+  const glm::dvec2 grab = view.toWindow(wingNear + glm::dvec2(0, -3));
+  Script s;
+  s.at(2, "key LEFT_ALT down").move(2, grab).at(3, "mouse left down");
+  for (int i = 1; i <= 4; ++i) s.move(3 + i, grab + glm::dvec2(2 * view.scale * i / 4.0, 0));
+  s.at(8, "mouse left up").at(8, "key LEFT_ALT up");
+  return s;
+}
+
+const json& question(const Row& row) { return row.raw.at("question"); }
+
+TEST_F(Building, ClosingWithUnsavedChangesAsksSaveAllDiscardOrCancelAndTheWindowStaysUntilAnswered) {
+  const fs::path layout = layoutCopy("unsaved");
+  const std::string before = *readFile(layout);
+  const auto probe = edit("unsaved-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  const double wingX = vec2(probe.back().raw.at("building").at("corridors").at(1).at("position")).x;
+
+  // Close: the question, the window still there; Esc cancels it, the move stays.
+  Script ask = movedWing(probe.back());
+  ask.at(12, "close").at(20, "capture building_question.png").key(25, "ESCAPE").at(30, "quit");
+  const auto asked = edit("unsaved-ask", layout, ask.str());
+  ASSERT_GE(asked.size(), 30u) << "the window stays while the question is up";
+  EXPECT_TRUE(question(asked[11]).is_null());
+  ASSERT_TRUE(question(asked[15]).is_object()) << asked[15].raw.dump();
+  EXPECT_EQ(question(asked[15])["about"], "close");
+  EXPECT_EQ(question(asked[15])["files"].size(), 1u);  // the layout (no shot changed)
+  const json saveAll = question(asked[21]).at("buttons").at("Save all");
+  ASSERT_EQ(saveAll.size(), 4u);
+  EXPECT_TRUE(question(asked[21])["buttons"].contains("Discard"));
+  EXPECT_TRUE(question(asked[21])["buttons"].contains("Cancel"));
+  EXPECT_TRUE(question(asked[27]).is_null());  // cancelled
+  EXPECT_TRUE(asked[27].raw.at("building").at("dirty").get<bool>());
+  EXPECT_NEAR(vec2(asked[27].raw["building"]["corridors"][1]["position"]).x, wingX + 2, 1e-9);
+  EXPECT_EQ(*readFile(layout), before);
+  EXPECT_TRUE(fs::exists(dir_ / "building_question.png"));
+
+  // Close, then a click on Save all: the layout is written and the run ends there.
+  Script save = movedWing(probe.back());
+  save.at(12, "close").move(20, {double(saveAll[0]) + 0.5 * double(saveAll[2]), double(saveAll[1]) + 0.5 * double(saveAll[3])});
+  save.at(21, "mouse left down").at(22, "mouse left up").at(60, "quit");
+  const auto saved = edit("unsaved-save", layout, save.str());
+  ASSERT_FALSE(saved.empty());
+  EXPECT_LT(saved.back().frame, 30) << "Save all closes the window";
+  auto text = readFile(layout);
+  ASSERT_TRUE(text.ok());
+  const json file = json::parse(*text);
+  EXPECT_NEAR(file["corridors"][1]["position"][0].get<double>(), wingX + 2, 1e-9) << *text;
+  EXPECT_EQ(file["title"], "two corridors");
+}
+
+TEST_F(Building, ClosingFromTheShotEditorAsksAboutTheWholeBuildingAndDiscardWritesNothing) {
+  const fs::path layout = layoutCopy("discard");
+  const std::string before = *readFile(layout);
+  const std::string wingBytes = *readFile(dir_ / "corridor_a.json");
+  const auto probe = edit("discard-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  // The wing moved, then its shot opened in the shot editor (clean: only the layout is
+  // unsaved); the close there asks in the plan; D discards and closes.
+  Script s = movedWing(probe.back());
+  s.key(10, "E").at(14, "close").key(20, "D").at(60, "quit");
+  const auto rows = edit("discard", layout, s.str());
+  ASSERT_GE(rows.size(), 20u);
+  EXPECT_EQ(rows[12].mode, "edit");
+  EXPECT_EQ(rows[16].mode, "building");
+  ASSERT_TRUE(question(rows[16]).is_object()) << rows[16].raw.dump();
+  EXPECT_EQ(question(rows[16])["about"], "close");
+  EXPECT_LT(rows.back().frame, 30) << "Discard closes the window";
+  EXPECT_EQ(*readFile(layout), before);
+  EXPECT_EQ(*readFile(dir_ / "corridor_a.json"), wingBytes);
+}
+
+TEST_F(Building, ClosingWithAnotherShotEditedInTheEditorAsksOnceForItAndTheBuilding) {
+  const fs::path layout = layoutCopy("other-close");
+  const fs::path other = dir_ / "other_shot.json";
+  fs::copy_file(dir_ / "corridor_a.json", other, fs::copy_options::overwrite_existing);
+  const auto probe = edit("other-close-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  const double wingX = vec2(probe.back().raw.at("building").at("corridors").at(1).at("position")).x;
+  // The wing moved; in the shot editor another shot file (not the building's) opened
+  // and its P3 nudged up 2 px; the close asks about both in the plan; S saves both.
+  Script s = movedWing(probe.back());
+  s.key(10, "E").at(12, "drop " + other.string());
+  s.at(14, "key LEFT_ALT down").key(14, "3").at(14, "key LEFT_ALT up").key(15, "UP").key(16, "UP");
+  s.at(18, "close").key(24, "S").at(60, "quit");
+  const auto rows = edit("other-close", layout, s.str());
+  ASSERT_GE(rows.size(), 24u);
+  EXPECT_EQ(rows[17].mode, "edit");
+  EXPECT_EQ(fs::path(rows[17].path.value_or("")), other);
+  EXPECT_TRUE(rows[17].dirty);
+  const double p3y = rows[17].corners.at(2).y;
+  EXPECT_EQ(rows[20].mode, "building");
+  ASSERT_TRUE(question(rows[20]).is_object()) << rows[20].raw.dump();
+  EXPECT_EQ(question(rows[20])["files"].size(), 2u) << question(rows[20]).dump();
+  EXPECT_LT(rows.back().frame, 30) << "Save all closes the window";
+  const json file = json::parse(*readFile(layout));
+  EXPECT_NEAR(file["corridors"][1]["position"][0].get<double>(), wingX + 2, 1e-9);
+  const json shot = json::parse(*readFile(other));
+  EXPECT_NEAR(shot["corners_px"]["P3"][1].get<double>(), p3y, 1e-9);
+}
+
+TEST_F(Building, ALayoutDroppedOverUnsavedChangesAsksFirst) {
+  const fs::path layout = layoutCopy("drop-over"), other = layoutCopy("drop-other");
+  const auto probe = edit("drop-over-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  Script s = movedWing(probe.back());
+  s.at(12, "drop " + other.string()).key(20, "ESCAPE").at(24, "drop " + other.string()).key(30, "D").at(34, "quit");
+  const auto rows = edit("drop-over", layout, s.str());
+  ASSERT_GE(rows.size(), 34u);
+  ASSERT_TRUE(question(rows[15]).is_object());
+  EXPECT_EQ(question(rows[15])["about"], "open");
+  EXPECT_EQ(fs::path(rows[22].raw.at("building").at("path").get<std::string>()), layout);  // Cancel: still this one
+  EXPECT_TRUE(rows[22].raw["building"]["dirty"].get<bool>());
+  EXPECT_EQ(fs::path(rows[32].raw.at("building").at("path").get<std::string>()), other);  // Discard: the other
+  EXPECT_FALSE(rows[32].raw["building"]["dirty"].get<bool>());
+}
+
+TEST_F(Building, ThePreviewPaneShowsTheWholeBuildingRebuiltWhenAnEditIsReleasedNotDuringTheDrag) {
+  const fs::path layout = layoutCopy("pane");
+  const auto probe = edit("pane-probe", layout, "1 quit\n");
+  ASSERT_GE(probe.size(), 1u);
+  const PlanView view = planView(probe.back());
+  const json& corridors = probe.back().raw.at("building").at("corridors");
+  const glm::dvec2 hallSize = vec2(corridors[0]["size_m"]), wingNear = vec2(corridors[1]["position"]);
+  // The first model, then the wing dragged onto the hall's far wall (as above), released.
+  const glm::dvec2 target(0.1, -hallSize.y + 0.12);
+  const glm::dvec2 grab = view.toWindow(wingNear + glm::dvec2(0, -2));
+  const glm::dvec2 by = view.scale * (target - wingNear);
+  Script s;
+  s.at(1, "preview-wait").at(2, "capture pane_before.png").move(2, grab).at(3, "mouse left down");
+  for (int i = 1; i <= 6; ++i) s.move(3 + i, grab + by * (i / 6.0));
+  s.at(11, "mouse left up").at(13, "preview-wait").at(13, "capture pane_after.png");
+  // A left drag over the pane orbits it (the plan stays as it is).
+  const json paneRect = probe.back().raw.at("preview").at("rect");
+  const glm::dvec2 paneCentre(double(paneRect[0]) + 0.5 * double(paneRect[2]), double(paneRect[1]) + 0.5 * double(paneRect[3]));
+  s.move(15, paneCentre).at(16, "mouse left down").move(17, paneCentre + glm::dvec2(40, 10)).at(18, "mouse left up");
+  s.at(20, "quit");
+  const auto rows = edit("pane", layout, s.str());
+  ASSERT_GE(rows.size(), 20u);
+  const auto preview = [&](int frame) { return rows[frame].raw.at("preview"); };
+  EXPECT_TRUE(preview(1)["model"].get<bool>()) << preview(1).dump();
+  EXPECT_TRUE(preview(1)["current"].get<bool>());
+  EXPECT_TRUE(preview(1)["error"].is_null()) << preview(1).dump();
+  for (int f = 4; f <= 10; ++f) {  // dragging: nothing is built
+    EXPECT_FALSE(preview(f)["current"].get<bool>()) << "frame " << f;
+    EXPECT_FALSE(preview(f)["building"].get<bool>()) << "frame " << f;
+  }
+  EXPECT_TRUE(rows[11].raw["building"]["corridors"][1]["attach"].is_object());
+  EXPECT_TRUE(preview(11)["building"].get<bool>());  // released: the new layout is being built
+  EXPECT_TRUE(preview(13)["current"].get<bool>()) << preview(13).dump();
+  EXPECT_FALSE(preview(13)["building"].get<bool>());
+  EXPECT_EQ(preview(13)["camera"], "overview");
+  EXPECT_EQ(preview(19)["camera"], "orbit");
+  EXPECT_EQ(rows[19].raw["building"]["corridors"], rows[13].raw["building"]["corridors"]);
+  EXPECT_TRUE(preview(19)["current"].get<bool>());
+
+  // The pane in the capture: the model, not its background (0.13, 0.14, 0.16).
+  const json rect = preview(13).at("rect");
+  ASSERT_GT(rect[2].get<double>(), 100);
+  ASSERT_GT(rect[3].get<double>(), 100);
+  for (const char* picture : {"pane_before.png", "pane_after.png"}) {
+    auto frame = engine::loadImage(dir_ / picture);
+    ASSERT_TRUE(frame.ok()) << frame.message();
+    int model = 0, all = 0;
+    for (int y = int(rect[1]) + 20; y < int(rect[1]) + int(rect[3]) - 2; y += 3) {
+      for (int x = int(rect[0]) + 2; x < int(rect[0]) + int(rect[2]) - 2; x += 3) {
+        const auto p = frame->pixel(x, y);
+        ++all;
+        if (std::abs(int(p[0]) - 33) + std::abs(int(p[1]) - 36) + std::abs(int(p[2]) - 41) > 24) ++model;
+      }
+    }
+    EXPECT_GT(model, all / 10) << picture << ": " << model << " of " << all << " pixels are the model's";
+  }
+}
+
 TEST_F(Building, ALayoutThatCannotBeReadOrBuiltIsAMessageAndTheWindowStays) {
   const fs::path bad = dir_ / "bad.json";
   std::ofstream(bad) << R"({"corridors": [{"name": "hall", "shot": "corridor_b.json"},

@@ -1,0 +1,285 @@
+#include "editor/edit/building_preview.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+#include "editor/app/shell.h"
+#include "editor/edit/building.h"
+#include "editor/edit/document.h"
+#include "editor/edit/plan.h"
+#include "editor/edit/preview.h"
+#include "editor/edit/preview_build.h"
+
+namespace pw::edit {
+namespace {
+
+using nlohmann::ordered_json;
+
+constexpr float kOrbitRadPerPx = 0.01f;
+constexpr float kWheelFactor = 0.85f;
+const glm::vec3 kPaneBackground(0.13f, 0.14f, 0.16f);
+
+std::vector<metrology::Shot> shotsOf(const std::vector<modeling::MeasuredShot>& shots) {
+  std::vector<metrology::Shot> out;
+  for (const modeling::MeasuredShot& s : shots) out.push_back(s.loaded.shot);
+  return out;
+}
+
+bool sameShots(const std::vector<metrology::Shot>& a, const std::vector<metrology::Shot>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (!sameShot(a[i], b[i])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+engine::Camera overviewCamera(const engine::Bounds& bounds, double aspect, float fieldOfViewRad) {
+  engine::Camera camera;
+  camera.fieldOfViewRad = fieldOfViewRad;
+  if (bounds.empty()) return camera;
+  const glm::vec3 centre = bounds.center();
+  const glm::vec3 from = glm::normalize(glm::vec3(0.8f, 0.75f, 0.3f));
+  camera.orientation = engine::lookAtOrientation(centre + from, centre);
+  const glm::vec3 right = camera.orientation * glm::vec3(1, 0, 0), up = camera.orientation * glm::vec3(0, 1, 0);
+  // The field of view is across the smaller side of the pane.
+  const float tanHalf = std::tan(0.5f * fieldOfViewRad);
+  const float tanX = aspect >= 1 ? tanHalf * float(aspect) : tanHalf;
+  const float tanY = aspect >= 1 ? tanHalf : tanHalf / float(std::max(aspect, 1e-3));
+  // Each corner of the bounds inside the view: d >= its depth towards the camera plus
+  // its offset over the tangent.
+  float distance = 0.5f;
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner((k & 1) ? bounds.max.x : bounds.min.x, (k & 2) ? bounds.max.y : bounds.min.y,
+                           (k & 4) ? bounds.max.z : bounds.min.z);
+    const glm::vec3 q = corner - centre;
+    distance = std::max(distance, glm::dot(q, from) + std::max(std::abs(glm::dot(q, right)) / tanX,
+                                                                std::abs(glm::dot(q, up)) / tanY));
+  }
+  distance *= 1.08f;  // a margin
+  camera.position = centre + from * distance;
+  camera.nearM = std::max(0.05f, 0.01f * distance);
+  camera.farM = 4.0f * distance + 100.0f;
+  return camera;
+}
+
+BuildingPreview::BuildingPreview() = default;
+
+BuildingPreview::~BuildingPreview() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_one();
+  if (thread_.joinable()) thread_.join();
+}
+
+void BuildingPreview::update(app::Shell& shell) {
+  if (!renderer_) {
+    renderer_ = &shell.renderer();
+    thread_ = std::thread([this] { run(); });
+  }
+  std::vector<Done> done;
+  {
+    std::lock_guard lock(mutex_);
+    done = std::move(done_);
+    done_.clear();
+  }
+  for (Done& d : done) take(shell, std::move(d));
+}
+
+void BuildingPreview::ask(const modeling::Layout& layout, std::vector<modeling::MeasuredShot> shots, std::string title) {
+  if (!renderer_) return;
+  std::vector<metrology::Shot> plain = shotsOf(shots);
+  if (askedLayout_ && sameLayout(*askedLayout_, layout) && sameShots(askedShots_, plain)) return;
+  askedLayout_ = layout;
+  askedShots_ = std::move(plain);
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = Request{nextId_++, layout, std::move(shots), std::move(title)};
+  }
+  wake_.notify_one();
+}
+
+void BuildingPreview::cannotBuild(std::string why) {
+  askedLayout_.reset();
+  askedShots_.clear();
+  error_ = std::move(why);
+}
+
+bool BuildingPreview::showsCurrent(const modeling::Layout& layout, const std::vector<modeling::MeasuredShot>& shots) const {
+  return scene_ && error_.empty() && sameLayout(shownLayout_, layout) && sameShots(shownShots_, shotsOf(shots));
+}
+
+bool BuildingPreview::busy() const {
+  std::lock_guard lock(mutex_);
+  return building_ || pending_.has_value() || !done_.empty();
+}
+
+Status BuildingPreview::waitIdle(app::Shell& shell, double timeoutS) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutS);
+  while (busy()) {
+    update(shell);
+    if (std::chrono::steady_clock::now() > deadline) {
+      return makeError("the building's model was not built within " + std::to_string(int(timeoutS)) + " s");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  update(shell);
+  return {};
+}
+
+void BuildingPreview::run() {
+#ifdef __linux__
+  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 5);  // below the UI thread
+#endif
+  for (;;) {
+    Request request;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
+      if (stop_) return;
+      request = std::move(*pending_);
+      pending_.reset();
+      building_ = true;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    Done done{request.id, request.layout, shotsOf(request.shots), makeError("not built")};
+    auto model = buildBuildingModel(request.layout, request.shots, previewModelOptions(PreviewResolution::kReduced),
+                                    request.title);
+    if (!model) {
+      done.built = model.error();
+    } else if (auto staged = renderer_->stageScene(model->scene); !staged) {
+      done.built = staged.error();
+    } else {
+      Built built{std::move(*staged), engine::sceneBounds(model->scene), 0.0};
+      built.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      done.built = std::move(built);
+    }
+    std::lock_guard lock(mutex_);
+    done_.push_back(std::move(done));
+    building_ = false;
+  }
+}
+
+void BuildingPreview::take(app::Shell& shell, Done done) {
+  if (done.id <= shownId_) return;
+  if (!done.built) {
+    error_ = done.built.message();
+    return;
+  }
+  Built& built = *done.built;
+  engine::Renderer& renderer = shell.renderer();
+  if (scene_) {
+    if (Status replaced = renderer.replaceScene(scene_, std::move(built.staged)); !replaced) {
+      error_ = "the model cannot be shown: " + replaced.message();
+      return;
+    }
+  } else {
+    auto added = renderer.addScene(std::move(built.staged));
+    if (!added) {
+      error_ = "the model cannot be shown: " + added.message();
+      return;
+    }
+    scene_ = *added;
+  }
+  error_.clear();
+  shownId_ = done.id;
+  shownLayout_ = std::move(done.layout);
+  shownShots_ = std::move(done.shots);
+  bounds_ = built.bounds;
+  buildMs_ = built.buildMs;
+  if (overview_) camera_ = overviewCamera(bounds_, rect_.empty() ? 1.0 : rect_.size().x / std::max(1.0, rect_.size().y));
+}
+
+bool BuildingPreview::onInput(const app::InputEvent& event) {
+  const bool over = rect_.contains(cursorPx_) && !rect_.empty();
+  const glm::vec3 centre = bounds_.empty() ? glm::vec3(0.0f) : bounds_.center();
+  return std::visit(app::Overloaded{[&](const app::CursorEvent& e) {
+                                      cursorPx_ = e.positionPx;
+                                      if (!orbitFrom_) return false;
+                                      const glm::dvec2 by = e.positionPx - *orbitFrom_;
+                                      orbitFrom_ = e.positionPx;
+                                      if (by != glm::dvec2(0.0)) {
+                                        orbitCamera(camera_, centre, -kOrbitRadPerPx * float(by.x), kOrbitRadPerPx * float(by.y));
+                                        overview_ = false;
+                                      }
+                                      return true;
+                                    },
+                                    [&](const app::MouseButtonEvent& e) {
+                                      if (e.button != GLFW_MOUSE_BUTTON_LEFT) return over && e.down && !orbitFrom_;
+                                      if (!e.down) {
+                                        if (!orbitFrom_) return false;
+                                        orbitFrom_.reset();
+                                        return true;
+                                      }
+                                      if (!over) return false;
+                                      if (scene_) orbitFrom_ = cursorPx_;
+                                      return true;
+                                    },
+                                    [&](const app::ScrollEvent& e) {
+                                      if (!over) return false;
+                                      if (scene_ && e.offset.y != 0) {
+                                        dollyCamera(camera_, centre, std::pow(kWheelFactor, float(e.offset.y)));
+                                        overview_ = false;
+                                      }
+                                      return true;
+                                    },
+                                    [](const auto&) { return false; }},
+                    event);
+}
+
+void BuildingPreview::drawUi() const {
+  if (rect_.empty()) return;
+  char status[160];
+  const bool building = busy();
+  if (!error_.empty()) {
+    std::snprintf(status, sizeof status, "no model: %s", error_.c_str());
+  } else if (scene_) {
+    std::snprintf(status, sizeof status, "the building, built in %.0f ms%s (drag: orbit)", buildMs_,
+                  building ? "; building a newer one..." : "");
+  } else {
+    std::snprintf(status, sizeof status, "the building's model is being built...");
+  }
+  ImDrawList* list = ImGui::GetBackgroundDrawList();
+  list->PushClipRect({float(rect_.min.x), float(rect_.min.y)}, {float(rect_.max.x), float(rect_.max.y)}, true);
+  list->AddText(nullptr, 0.0f, {float(rect_.min.x) + 6, float(rect_.min.y) + 4},
+                error_.empty() ? IM_COL32(220, 220, 230, 255) : IM_COL32(230, 200, 120, 255), status, nullptr,
+                float(rect_.size().x) - 12);
+  list->PopClipRect();
+}
+
+std::optional<engine::SceneView> BuildingPreview::view() const {
+  if (!scene_ || rect_.empty()) return std::nullopt;
+  engine::SceneView view;
+  view.scene = scene_;
+  view.camera = camera_;
+  view.rect = pixelRect(rect_);
+  view.settings.backgroundColor = kPaneBackground;
+  return view;
+}
+
+ordered_json BuildingPreview::trace(bool current) const {
+  const glm::dvec2 size = rect_.size();
+  return ordered_json{{"model", bool(scene_)},
+                      {"current", current},
+                      {"building", busy()},
+                      {"camera", overview_ ? "overview" : "orbit"},
+                      {"rect", ordered_json::array({rect_.min.x, rect_.min.y, size.x, size.y})},
+                      {"build_ms", scene_ ? ordered_json(buildMs_) : ordered_json(nullptr)},
+                      {"error", error_.empty() ? ordered_json(nullptr) : ordered_json(error_)}};
+}
+
+}  // namespace pw::edit
