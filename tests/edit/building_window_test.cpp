@@ -26,29 +26,6 @@ using pw::test::CommandRun;
 
 constexpr int kWidth = 960, kHeight = 600;  // the plan is the left 672 x 600
 
-// A replay script: lines `FRAME EVENT` (as edit_window_test.cpp's).
-class Script {
- public:
-  Script& at(int frame, const std::string& event) {
-    text_ << frame << ' ' << event << '\n';
-    return *this;
-  }
-  Script& move(int frame, const glm::dvec2& p) {
-    std::ostringstream e;
-    e.precision(17);
-    e << "mousemove " << p.x << ' ' << p.y;
-    return at(frame, e.str());
-  }
-  Script& key(int frame, const std::string& name) { return at(frame, "key " + name + " down").at(frame, "key " + name + " up"); }
-  Script& ctrlKey(int frame, const std::string& name) {
-    return at(frame, "key LEFT_CONTROL down").key(frame, name).at(frame, "key LEFT_CONTROL up");
-  }
-  std::string str() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-};
-
 glm::dvec2 vec2(const json& a) { return {a.at(0).get<double>(), a.at(1).get<double>()}; }
 
 struct PlanView {
