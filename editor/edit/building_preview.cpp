@@ -26,8 +26,6 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr float kOrbitRadPerPx = 0.01f;
-constexpr float kWheelFactor = 0.85f;
 const glm::vec3 kPaneBackground(0.13f, 0.14f, 0.16f);
 
 std::vector<metrology::Shot> shotsOf(const std::vector<modeling::MeasuredShot>& shots) {
@@ -205,40 +203,11 @@ void BuildingPreview::take(app::Shell& shell, Done done) {
 }
 
 bool BuildingPreview::onInput(const app::InputEvent& event) {
-  const bool over = rect_.contains(cursorPx_) && !rect_.empty();
+  bool moved = false;
   const glm::vec3 centre = bounds_.empty() ? glm::vec3(0.0f) : bounds_.center();
-  return std::visit(app::Overloaded{[&](const app::CursorEvent& e) {
-                                      cursorPx_ = e.positionPx;
-                                      if (!orbitFrom_) return false;
-                                      const glm::dvec2 by = e.positionPx - *orbitFrom_;
-                                      orbitFrom_ = e.positionPx;
-                                      if (by != glm::dvec2(0.0)) {
-                                        orbitCamera(camera_, centre, -kOrbitRadPerPx * float(by.x), kOrbitRadPerPx * float(by.y));
-                                        overview_ = false;
-                                      }
-                                      return true;
-                                    },
-                                    [&](const app::MouseButtonEvent& e) {
-                                      if (e.button != GLFW_MOUSE_BUTTON_LEFT) return over && e.down && !orbitFrom_;
-                                      if (!e.down) {
-                                        if (!orbitFrom_) return false;
-                                        orbitFrom_.reset();
-                                        return true;
-                                      }
-                                      if (!over) return false;
-                                      if (scene_) orbitFrom_ = cursorPx_;
-                                      return true;
-                                    },
-                                    [&](const app::ScrollEvent& e) {
-                                      if (!over) return false;
-                                      if (scene_ && e.offset.y != 0) {
-                                        dollyCamera(camera_, centre, std::pow(kWheelFactor, float(e.offset.y)));
-                                        overview_ = false;
-                                      }
-                                      return true;
-                                    },
-                                    [](const auto&) { return false; }},
-                    event);
+  const bool taken = orbit_.onInput(event, rect_, bool(scene_), camera_, centre, &moved);
+  if (moved) overview_ = false;
+  return taken;
 }
 
 void BuildingPreview::drawUi() const {

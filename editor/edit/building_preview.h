@@ -21,6 +21,7 @@
 #include "base/result.h"
 #include "editor/app/app_mode.h"
 #include "editor/edit/canvas.h"
+#include "editor/edit/preview.h"
 #include "engine/gpu/renderer.h"
 #include "engine/gpu/view.h"
 #include "engine/scene/camera.h"
@@ -58,7 +59,7 @@ class BuildingPreview {
 
   // Input for the pane; true when it was the pane's (an orbit, the wheel over it).
   bool onInput(const app::InputEvent& event);
-  void endOrbit() { orbitFrom_.reset(); }
+  void endOrbit() { orbit_.end(); }
 
   void drawUi() const;  // the pane's status line, over it
   std::optional<engine::SceneView> view() const;
@@ -111,8 +112,7 @@ class BuildingPreview {
 
   engine::Camera camera_;
   bool overview_ = true;  // the camera is the overview until the pane is orbited or zoomed
-  glm::dvec2 cursorPx_{-1.0};
-  std::optional<glm::dvec2> orbitFrom_;
+  OrbitControl orbit_;
 };
 
 }  // namespace pw::edit

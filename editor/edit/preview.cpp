@@ -56,7 +56,7 @@ void Preview::setDocument(const cv::Mat& photo) {
   askedShot_.reset();
   askedFull_ = false;
   followPhoto_ = true;
-  orbitFrom_.reset();
+  orbit_.end();
   error_.clear();
 }
 
@@ -167,41 +167,48 @@ void Preview::toPhotoCamera() {
   camera_ = photoCamera_;
 }
 
-bool Preview::onInput(const app::InputEvent& event) {
-  const bool over = shown_ && rect_.contains(cursorPx_);
-  const bool haveModel = scene_ && shownDocument_ == documentId_;
+bool OrbitControl::onInput(const app::InputEvent& event, const WindowRect& rect, bool active, engine::Camera& camera,
+                           const glm::vec3& centre, bool* moved) {
+  const bool over = !rect.empty() && rect.contains(cursorPx_);
   return std::visit(app::Overloaded{[&](const app::CursorEvent& e) {
                                       cursorPx_ = e.positionPx;
-                                      if (!orbitFrom_) return false;
-                                      const glm::dvec2 by = e.positionPx - *orbitFrom_;
-                                      orbitFrom_ = e.positionPx;
+                                      if (!from_) return false;
+                                      const glm::dvec2 by = e.positionPx - *from_;
+                                      from_ = e.positionPx;
                                       if (by == glm::dvec2(0.0)) return true;
-                                      orbitCamera(camera_, centre_, -kOrbitRadPerPx * float(by.x),
-                                                  kOrbitRadPerPx * float(by.y));
-                                      followPhoto_ = false;
+                                      orbitCamera(camera, centre, -kOrbitRadPerPx * float(by.x), kOrbitRadPerPx * float(by.y));
+                                      *moved = true;
                                       return true;
                                     },
                                     [&](const app::MouseButtonEvent& e) {
-                                      if (e.button != GLFW_MOUSE_BUTTON_LEFT) return over && e.down && !orbitFrom_;
+                                      if (e.button != GLFW_MOUSE_BUTTON_LEFT) return over && e.down && !from_;
                                       if (!e.down) {
-                                        if (!orbitFrom_) return false;
-                                        orbitFrom_.reset();
+                                        if (!from_) return false;
+                                        from_.reset();
                                         return true;
                                       }
                                       if (!over) return false;
-                                      if (haveModel) orbitFrom_ = cursorPx_;
+                                      if (active) from_ = cursorPx_;
                                       return true;
                                     },
                                     [&](const app::ScrollEvent& e) {
                                       if (!over) return false;
-                                      if (haveModel && e.offset.y != 0) {
-                                        dollyCamera(camera_, centre_, std::pow(kWheelFactor, float(e.offset.y)));
-                                        followPhoto_ = false;
+                                      if (active && e.offset.y != 0) {
+                                        dollyCamera(camera, centre, std::pow(kWheelFactor, float(e.offset.y)));
+                                        *moved = true;
                                       }
                                       return true;
                                     },
                                     [](const auto&) { return false; }},
                     event);
+}
+
+bool Preview::onInput(const app::InputEvent& event) {
+  bool moved = false;
+  const bool taken = orbit_.onInput(event, shown_ ? rect_ : WindowRect{}, scene_ && shownDocument_ == documentId_,
+                                    camera_, centre_, &moved);
+  if (moved) followPhoto_ = false;
+  return taken;
 }
 
 void Preview::drawUi(const WindowRect& toolbar) {

@@ -39,6 +39,23 @@ void orbitCamera(engine::Camera& camera, const glm::vec3& centre, float yawRad, 
 // orientation; it stays at least 0.1 m from the centre.
 void dollyCamera(engine::Camera& camera, const glm::vec3& centre, float factor);
 
+// A pane's camera moved by the mouse about a centre: left drag over the pane orbits
+// (orbitCamera), the wheel over it moves nearer or farther (dollyCamera). The shot
+// editor's preview and building mode's share it.
+class OrbitControl {
+ public:
+  // Input for a pane at `rect` (empty: not shown); true when it was the pane's.
+  // `active`: there is a model to move about. `*moved`: set when the camera moved.
+  bool onInput(const app::InputEvent& event, const WindowRect& rect, bool active, engine::Camera& camera,
+               const glm::vec3& centre, bool* moved);
+  bool orbiting() const { return from_.has_value(); }
+  void end() { from_.reset(); }
+
+ private:
+  glm::dvec2 cursorPx_{-1.0};
+  std::optional<glm::dvec2> from_;
+};
+
 class Preview {
  public:
   Preview();
@@ -50,7 +67,7 @@ class Preview {
     endOrbit();
   }
   // Lets go of an orbit in progress (the editor left for the walk, the pane hidden).
-  void endOrbit() { orbitFrom_.reset(); }
+  void endOrbit() { orbit_.end(); }
 
   // A new document: its photo (BGR, shared, never written); what was shown is of
   // the old one until the new one's first model arrives.
@@ -70,7 +87,7 @@ class Preview {
 
   // Input for the pane; true when it was the pane's (an orbit, the wheel over it).
   bool onInput(const app::InputEvent& event);
-  bool orbiting() const { return orbitFrom_.has_value(); }
+  bool orbiting() const { return orbit_.orbiting(); }
 
   // The pane's toolbar (over the top of `toolbar`) and its status text.
   void drawUi(const WindowRect& toolbar);
@@ -118,8 +135,7 @@ class Preview {
 
   engine::Camera camera_;
   bool followPhoto_ = true;  // the camera is the photo's until the pane is orbited or zoomed
-  glm::dvec2 cursorPx_{-1.0};
-  std::optional<glm::dvec2> orbitFrom_;
+  OrbitControl orbit_;
 
   std::chrono::steady_clock::time_point lastUpdate_{};
   double frameIntervalMs_ = 0;  // wall clock between the last two steps
