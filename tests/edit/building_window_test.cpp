@@ -109,7 +109,7 @@ TEST_F(Building, DraggingTheWingToTheHallsFarEndAttachesItThereSavesAndWalksTheW
   s.move(2, grab).at(3, "mouse left down");
   for (int i = 1; i <= 6; ++i) s.move(3 + i, grab + by * (i / 6.0));
   s.at(10, "capture plan_snapping.png").at(11, "mouse left up");
-  s.ctrlKey(13, "S").key(14, "F").at(15, "capture plan_attached.png");  // saved, then the whole building fitted
+  s.ctrlKey(13, "S").key(14, "F").at(15, "preview-wait").at(15, "capture plan_attached.png");  // saved, then the whole building fitted
   s.key(17, "W").at(25, "capture building_walk.png");
   // The wing's entrance, inside the second corridor (a glide of 30 frames).
   s.at(26, "viewpoint 5").at(62, "capture building_wing.png");
