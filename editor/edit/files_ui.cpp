@@ -552,9 +552,9 @@ void EditMode::drawOpenChoices(app::Shell& shell) {
     if (chosen) requestOpen(shell, *chosen);  // after the loop: opening changes the list
   }
   ImGui::Spacing();
-  ImGui::TextUnformatted("Or drop a photo or a shot file on this window,");
-  ImGui::TextUnformatted("or give one on the command line:");
-  ImGui::TextUnformatted("  photowalk edit PHOTO.jpg | SHOT.json");
+  ImGui::TextUnformatted("Or drop a photo, a shot file or a layout (a building)");
+  ImGui::TextUnformatted("on this window, or give one on the command line:");
+  ImGui::TextUnformatted("  photowalk edit PHOTO.jpg | SHOT.json | LAYOUT.json");
 }
 
 void EditMode::drawExportButtons(app::Shell& shell) {
