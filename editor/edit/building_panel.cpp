@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "editor/edit/panel_style.h"
 #include "editor/app/shell.h"
 #include "editor/edit/building_mode.h"
 #include "editor/edit/overlay.h"
@@ -13,14 +14,11 @@
 namespace pw::edit {
 namespace {
 
+using namespace ui;  // panel_style.h
+
 using modeling::Layout;
 using modeling::Side;
 
-constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                          ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoBringToFrontOnFocus;
-const ImVec4 kErrorColour(1.0f, 0.45f, 0.40f, 1.0f);
-const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
 
 const char* const kPlanKeys =
     "left drag a corridor  move it; its near end snaps to\n"
@@ -41,17 +39,6 @@ const char* const kPlanKeys =
 
 ImU32 colour(const glm::u8vec4& c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 ImVec2 im(const glm::dvec2& p) { return {float(p.x), float(p.y)}; }
-
-WindowRect currentWindowRect() {
-  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  return {{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};
-}
-
-void wrapped(const ImVec4& c, const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, c);
-  ImGui::TextWrapped("%s", text.c_str());
-  ImGui::PopStyleColor();
-}
 
 const char* const kSides[] = {"far", "left", "right"};
 

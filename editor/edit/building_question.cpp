@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "editor/edit/panel_style.h"
 #include "editor/app/shell.h"
 #include "editor/edit/autosave.h"
 #include "editor/edit/building_mode.h"
@@ -20,12 +21,13 @@ using nlohmann::ordered_json;
 
 namespace {
 
+using namespace ui;  // panel_style.h
+
 enum Answer { kSaveAll = 0, kDiscard = 1, kCancel = 2 };
 
 const char* const kQuestionTitle = "Unsaved changes in the building";
 constexpr ImGuiWindowFlags kDialog =
     ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
-const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
 
 // The side files the editor's autosave may have left of shots whose changes are now
 // saved or discarded (what they hold is then nobody's).

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "editor/edit/panel_style.h"
 #include "editor/app/shell.h"
 #include "editor/edit/edit_mode.h"
 #include "editor/edit/handle_warnings.h"
@@ -17,12 +18,12 @@
 namespace pw::edit {
 namespace {
 
+using namespace ui;  // panel_style.h
+
 using metrology::kCornerCount;
 using metrology::Shot;
 using nlohmann::ordered_json;
 
-const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
-const ImVec4 kWarningColour(1.0f, 0.80f, 0.30f, 1.0f);
 const ImU32 kPrincipalColour = IM_COL32(240, 90, 255, 255);
 const ImU32 kReferenceColour = IM_COL32(120, 255, 230, 255);
 constexpr double kGrabRadiusPx = 12;
@@ -45,12 +46,6 @@ constexpr std::array<SensorPreset, 10> kSensors{{
     {"phone 1/2.55\" 5.6 x 4.2", 5.6, 4.2},
     {"phone 1/3\" 4.8 x 3.6", 4.8, 3.6},
 }};
-
-void wrapped(const ImVec4& colour, const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextWrapped("%s", text.c_str());
-  ImGui::PopStyleColor();
-}
 
 ordered_json pair(const glm::dvec2& p) { return ordered_json::array({p.x, p.y}); }
 ordered_json optional(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "editor/edit/panel_style.h"
 #include "editor/app/shell.h"
 #include "editor/edit/edit_mode.h"
 #include "editor/edit/model_export.h"
@@ -21,10 +22,10 @@ using nlohmann::ordered_json;
 
 namespace {
 
+using namespace ui;  // panel_style.h
+
 constexpr ImGuiWindowFlags kDialog =
     ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
-const ImVec4 kErrorColour(1.0f, 0.45f, 0.40f, 1.0f);
-const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
 
 const char* const kOpenTitle = "Open a photo or shot file";
 const char* const kSaveAsTitle = "Save the shot as";

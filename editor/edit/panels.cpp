@@ -5,21 +5,18 @@
 #include <cmath>
 #include <cstdio>
 
+#include "editor/edit/panel_style.h"
 #include "editor/app/shell.h"
 #include "editor/edit/edit_mode.h"
 
 namespace pw::edit {
 namespace {
 
+using namespace ui;  // panel_style.h
+
 using metrology::kCornerCount;
 using metrology::Shot;
 
-constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                          ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoBringToFrontOnFocus;
-const ImVec4 kWarningColour(1.0f, 0.80f, 0.30f, 1.0f);
-const ImVec4 kErrorColour(1.0f, 0.45f, 0.40f, 1.0f);
-const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
 
 const char* const kKeys =
     "wheel              zoom about the cursor\n"
@@ -41,17 +38,6 @@ const char* const kKeys =
     "P                  show/hide the 3D preview\n"
     "drag, wheel on it  orbit the preview; zoom it\n"
     "F1                 keys";
-
-void wrapped(const ImVec4& colour, const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextWrapped("%s", text.c_str());
-  ImGui::PopStyleColor();
-}
-
-WindowRect currentWindowRect() {
-  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  return {{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};
-}
 
 ImVec4 roleColourVec(int corner) {
   const glm::u8vec4 c = roleColour(cornerRole(corner));

@@ -1,0 +1,36 @@
+// What the editor's ImGui panels share (panels.cpp, camera_panel.cpp, files_ui.cpp,
+// building_panel.cpp, building_question.cpp): the fixed side-panel window, the
+// colours of notes, warnings and errors, and two small helpers.
+#pragma once
+
+#include <imgui.h>
+
+#include <string>
+
+#include "editor/edit/canvas.h"
+
+namespace pw::edit::ui {
+
+// A panel laid out from the window's size (ImGui 1.86 has no docking).
+inline constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                                 ImGuiWindowFlags_NoNavInputs |
+                                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+inline const ImVec4 kWarningColour(1.0f, 0.80f, 0.30f, 1.0f);
+inline const ImVec4 kErrorColour(1.0f, 0.45f, 0.40f, 1.0f);
+inline const ImVec4 kNoteColour(0.70f, 0.75f, 0.80f, 1.0f);
+
+// Wrapped text in `colour`.
+inline void wrapped(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+// The current ImGui window in window pixels (what covers the canvas or the plan).
+inline WindowRect currentWindowRect() {
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  return {{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};
+}
+
+}  // namespace pw::edit::ui
