@@ -8,12 +8,6 @@
 #include <cmath>
 #include <cstdio>
 
-#ifdef __linux__
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
-
 #include "editor/app/shell.h"
 #include "editor/edit/building.h"
 #include "editor/edit/document.h"
@@ -140,9 +134,7 @@ Status BuildingPreview::waitIdle(app::Shell& shell, double timeoutS) {
 }
 
 void BuildingPreview::run() {
-#ifdef __linux__
-  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 5);  // below the UI thread
-#endif
+  lowerThreadPriority();
   for (;;) {
     Request request;
     {
@@ -179,19 +171,9 @@ void BuildingPreview::take(app::Shell& shell, Done done) {
     return;
   }
   Built& built = *done.built;
-  engine::Renderer& renderer = shell.renderer();
-  if (scene_) {
-    if (Status replaced = renderer.replaceScene(scene_, std::move(built.staged)); !replaced) {
-      error_ = "the model cannot be shown: " + replaced.message();
-      return;
-    }
-  } else {
-    auto added = renderer.addScene(std::move(built.staged));
-    if (!added) {
-      error_ = "the model cannot be shown: " + added.message();
-      return;
-    }
-    scene_ = *added;
+  if (Status shown = showStagedScene(shell.renderer(), scene_, std::move(built.staged)); !shown) {
+    error_ = "the model cannot be shown: " + shown.message();
+    return;
   }
   error_.clear();
   shownId_ = done.id;

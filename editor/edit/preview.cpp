@@ -135,19 +135,9 @@ void Preview::take(app::Shell& shell, PreviewBuilder::Done done, const metrology
     return;
   }
   PreviewModel& model = *done.model;
-  engine::Renderer& renderer = shell.renderer();
-  if (scene_) {
-    if (Status replaced = renderer.replaceScene(scene_, std::move(model.staged)); !replaced) {
-      error_ = "the model cannot be shown: " + replaced.message();
-      return;
-    }
-  } else {
-    auto added = renderer.addScene(std::move(model.staged));
-    if (!added) {
-      error_ = "the model cannot be shown: " + added.message();
-      return;
-    }
-    scene_ = *added;
+  if (Status shown = showStagedScene(shell.renderer(), scene_, std::move(model.staged)); !shown) {
+    error_ = "the model cannot be shown: " + shown.message();
+    return;
   }
   error_.clear();
   shownRequest_ = done.id;
@@ -165,6 +155,14 @@ void Preview::take(app::Shell& shell, PreviewBuilder::Done done, const metrology
 void Preview::toPhotoCamera() {
   followPhoto_ = true;
   camera_ = photoCamera_;
+}
+
+Status showStagedScene(engine::Renderer& renderer, engine::SceneHandle& scene, engine::StagedScene staged) {
+  if (scene) return renderer.replaceScene(scene, std::move(staged));
+  auto added = renderer.addScene(std::move(staged));
+  if (!added) return added.error();
+  scene = *added;
+  return {};
 }
 
 bool OrbitControl::onInput(const app::InputEvent& event, const WindowRect& rect, bool active, engine::Camera& camera,

@@ -56,6 +56,10 @@ class OrbitControl {
   std::optional<glm::dvec2> from_;
 };
 
+// Puts `staged` on the GPU as `*scene`: replaced when there is one (frames in flight
+// keep the old), else added. Errors: the renderer's, with the scene left as it was.
+Status showStagedScene(engine::Renderer& renderer, engine::SceneHandle& scene, engine::StagedScene staged);
+
 class Preview {
  public:
   Preview();

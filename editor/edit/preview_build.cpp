@@ -126,12 +126,14 @@ const cv::Mat& PreviewBuilder::reducedFor(const Request& request) {
   return reduced_;
 }
 
-void PreviewBuilder::run() {
+void lowerThreadPriority() {
 #ifdef __linux__
-  // Below the UI thread: on a machine with two cores, the frames come first and the
-  // model a little later. (Linux gives each thread its own nice value.)
   (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 5);
 #endif
+}
+
+void PreviewBuilder::run() {
+  lowerThreadPriority();
   for (;;) {
     Request request;
     {

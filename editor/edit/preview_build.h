@@ -68,6 +68,10 @@ modeling::ModelOptions previewModelOptions(PreviewResolution resolution);
 Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const metrology::Shot& shot,
                                        const cv::Mat& photo, PreviewResolution resolution);
 
+// Lowers the calling thread's priority below the UI thread's (nice 5; Linux gives each
+// thread its own): a model worker's, so that on two cores the frames come first.
+void lowerThreadPriority();
+
 // One worker thread that builds what is asked last. A request waiting is replaced by a
 // newer one, so a drag's steps never queue up; the worker builds one at a time (a full
 // build is not interrupted: a newer request waits for it, up to about a second).
