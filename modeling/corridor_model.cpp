@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "metrology/rectify.h"
@@ -17,7 +19,12 @@ namespace {
 
 using metrology::Measurement;
 
-constexpr double kBehindCameraM = 1.0;  // untextured surfaces run on this far behind the eye
+constexpr double kBehindCameraM = 1.0;  // photo-only: untextured surfaces run on this far behind the eye
+// Synthesized: the corridor runs on this far behind the photo's camera and is closed
+// there by a wall (about where a person taking a photo down a corridor stands with
+// their back to a wall or a door; the photo cannot say).
+constexpr double kClosedBehindCameraM = 3.0;
+constexpr int kMaxExtensionColumns = 4096;
 constexpr int kFaces = 5;               // far wall, left, right, floor, ceiling (Surface 0..4)
 constexpr double kMinPxPerM = 16;       // a texture's least density, where the photo shows little
 constexpr double kOverviewFieldOfViewDeg = 60.0;
@@ -118,6 +125,101 @@ engine::Material litMaterial(const glm::vec3& diffuse) {
   return material;
 }
 
+
+// A surface's texture laid out depth-major for synthesis (synthesis.h: columns along the
+// corridor, the one nearest the camera first) and back. The textures' own layouts
+// (rectify.h, surfaces.h): the left wall's columns run from the near end, the right
+// wall's towards it; the floor's rows run from the far end down, the ceiling's from the
+// near end.
+cv::Mat toDepthMajor(const cv::Mat& texture, Surface surface) {
+  cv::Mat out;
+  switch (surface) {
+    case Surface::kLeftWall: out = texture.clone(); break;
+    case Surface::kRightWall: cv::flip(texture, out, 1); break;
+    case Surface::kFloor: cv::transpose(texture, out), cv::flip(out, out, 1); break;
+    default: cv::transpose(texture, out); break;  // ceiling
+  }
+  return out;
+}
+
+cv::Mat fromDepthMajor(const cv::Mat& depthMajor, Surface surface) {
+  cv::Mat out;
+  switch (surface) {
+    case Surface::kLeftWall: out = depthMajor.clone(); break;
+    case Surface::kRightWall: cv::flip(depthMajor, out, 1); break;
+    case Surface::kFloor: cv::flip(depthMajor, out, 1), cv::transpose(out, out); break;
+    default: cv::transpose(depthMajor, out); break;
+  }
+  return out;
+}
+
+// The texel (i, j) of the surface's own texture (W x H) at depth-major (x, y).
+glm::dvec2 ownTexel(Surface surface, double x, double y, int width, int height) {
+  switch (surface) {
+    case Surface::kLeftWall: return {x, y};
+    case Surface::kRightWall: return {width - 1 - x, y};
+    case Surface::kFloor: return {y, height - 1 - x};
+    default: return {y, x};
+  }
+}
+
+// The same surface's strip from the texture's near edge to `nearM`.
+Rect stripTo(Surface surface, const metrology::Dimensions& box, double fromM, double nearM) {
+  const Panel inner = surfacePanel(surface, box, fromM), outer = surfacePanel(surface, box, nearM);
+  return stripBeyond(outer.extent, inner.extent);
+}
+
+// Detail where the photo saw the surface coarsely, and texture where it did not, with
+// the surface continued by `extensionM` towards the camera (synthesis.h).
+void synthesize(CorridorModel& model, Surface surface, double extensionM, const ModelOptions& options) {
+  SurfaceTexture& tex = *model.textures[static_cast<int>(surface)];
+  cv::Mat rgba(tex.image.height, tex.image.width, CV_8UC4, tex.image.rgba.data()), bgr;
+  cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
+  cv::Mat depthMajor = toDepthMajor(bgr, surface);
+  const bool depthAlongS = surface == Surface::kLeftWall || surface == Surface::kRightWall;
+  const double depthM = depthAlongS ? tex.rect.s1 - tex.rect.s0 : tex.rect.t1 - tex.rect.t0;
+  const int extension =
+      extensionM > 0 ? std::clamp(static_cast<int>(std::lround(extensionM * depthMajor.cols / depthM)), 1, kMaxExtensionColumns) : 0;
+  cv::Mat canvas(depthMajor.rows, depthMajor.cols + extension, CV_8UC3, cv::Scalar::all(0));
+  depthMajor.copyTo(canvas(cv::Rect(extension, 0, depthMajor.cols, depthMajor.rows)));
+  const glm::mat3 h = tex.sourceFromTexCoord;
+  const int w = tex.image.width, ht = tex.image.height;
+  const PhotoOfTexel photoOf = [&](double x, double y) -> std::optional<glm::dvec2> {
+    if (x < extension - 0.5) return std::nullopt;
+    const glm::dvec2 ij = ownTexel(surface, x - extension, y, w, ht);
+    const glm::dvec3 p = glm::dmat3(h) * glm::dvec3((ij.x + 0.5) / w, 1.0 - (ij.y + 0.5) / ht, 1.0);
+    if (!(p.z > 1e-9)) return std::nullopt;
+    return glm::dvec2(p.x / p.z, p.y / p.z);
+  };
+  model.synthesis[static_cast<int>(surface)] =
+      synthesizeSurface(canvas, photoOf, cv::Size(model.photoWidth, model.photoHeight), SynthesisOptions{options.detail, true});
+  tex.image = imageFromBgr(fromDepthMajor(canvas(cv::Rect(extension, 0, depthMajor.cols, depthMajor.rows)), surface));
+  if (extension > 0) {
+    SurfaceTexture strip;
+    strip.rect = stripTo(surface, model.box, model.photoNearM, model.untexturedNearM);
+    strip.image = imageFromBgr(fromDepthMajor(canvas(cv::Rect(0, 0, extension, depthMajor.rows)), surface));
+    strip.pxPerM = tex.pxPerM;
+    model.extensions[static_cast<int>(surface)] = std::move(strip);
+  }
+}
+
+// The median of each channel of an engine image (0..1).
+glm::vec3 medianColor(const engine::Image& image) {
+  std::array<std::vector<uint8_t>, 3> channels;
+  const size_t step = std::max<size_t>(1, image.rgba.size() / 4 / 65536);  // a sample is plenty
+  for (size_t i = 0; i * 4 < image.rgba.size(); i += step) {
+    for (int c = 0; c < 3; ++c) channels[c].push_back(image.rgba[i * 4 + c]);
+  }
+  glm::vec3 out(0.5f);
+  for (int c = 0; c < 3; ++c) {
+    if (channels[c].empty()) continue;
+    auto mid = channels[c].begin() + channels[c].size() / 2;
+    std::nth_element(channels[c].begin(), mid, channels[c].end());
+    out[c] = *mid / 255.0f;
+  }
+  return out;
+}
+
 glm::quat toQuat(const glm::dmat3& m) { return glm::normalize(glm::quat(glm::mat3(m))); }
 
 }  // namespace
@@ -144,7 +246,8 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
   const double cameraZ = measurement.pose.positionM.z;
   if (!attached && cameraZ > 0) {
     model.photoNearM = photoNearExtent(measurement, model.box, photo.cols, photo.rows);
-    model.untexturedNearM = std::max(model.photoNearM, cameraZ + kBehindCameraM);
+    model.untexturedNearM = std::max(model.photoNearM, cameraZ + (options.photoOnly ? kBehindCameraM : kClosedBehindCameraM));
+    model.closed = !options.photoOnly;
   }
   metrology::PhotoPyramid pyramid(photo);
   for (int s = 0; s < kFaces; ++s) {
@@ -153,6 +256,14 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
     auto texture = cutTexture(pyramid, measurement, surface, panel, options, model.meanColor[s]);
     if (!texture) return makeError(name + ": " + texture.message());
     model.textures[s] = std::move(*texture);
+  }
+  if (!options.photoOnly) {
+    // The four surfaces are independent: one thread each (OpenCV's pool).
+    const Surface surfaces[] = {Surface::kLeftWall, Surface::kRightWall, Surface::kFloor, Surface::kCeiling};
+    cv::parallel_for_(cv::Range(0, 4), [&](const cv::Range& range) {
+      for (int i = range.start; i < range.end; ++i) synthesize(model, surfaces[i], model.untexturedNearM - model.photoNearM, options);
+    });
+    model.nearEndColor = medianColor(model.textures[0]->image);
   }
   return model;
 }
@@ -218,7 +329,21 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
       addShape(panelMesh(textured), appearance, surfaceName(surface));
 
-      if (model.untexturedNearM > model.photoNearM) {
+      if (const auto& extension = model.extensions[s]) {
+        Panel strip = surfacePanel(surface, model.box, model.untexturedNearM);
+        strip.extent = extension->rect;
+        strip.textureRect = extension->rect;
+        strip.openings = textured.openings;
+        strip.maxCellM = cellM;
+        auto stripTexture = std::make_shared<engine::Texture>();
+        stripTexture->image = std::make_shared<engine::Image>(extension->image);
+        stripTexture->url = model.name + "_" + surfaceName(surface) + "_near.png";
+        stripTexture->wrapS = stripTexture->wrapT = engine::TextureWrap::kClamp;
+        auto stripAppearance = std::make_shared<engine::Appearance>();
+        stripAppearance->texture = stripTexture;
+        if (options.lit) stripAppearance->material = litMaterial(glm::vec3(1.0f));
+        addShape(panelMesh(strip), stripAppearance, std::string(surfaceName(surface)) + "_near");
+      } else if (model.untexturedNearM > model.photoNearM) {
         Panel strip = surfacePanel(surface, model.box, model.untexturedNearM);
         strip.extent = stripBeyond(strip.extent, textured.extent);
         strip.openings = textured.openings;
@@ -229,6 +354,33 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                    std::string(surfaceName(surface)) + "_near");
         }
       }
+    }
+    // Which parts are synthesized, for people and other viewers (WorldInfo info text).
+    for (int s = 1; s < kFaces; ++s) {
+      const SynthesisStats& st = model.synthesis[s];
+      const std::string texture = model.name + "_" + surfaceName(static_cast<Surface>(s));
+      if (st.detailFraction > 0 || st.filledFraction > 0) {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "synthesized: %s: detail added to %.0f%% of the texels (the photo saw them coarsely), "
+                      "%.0f%% filled (the photo did not see them)",
+                      texture.c_str(), 100 * st.detailFraction, 100 * st.filledFraction);
+        scene.info.push_back(line);
+      }
+      if (model.extensions[s]) scene.info.push_back("synthesized: " + texture + "_near, all of it (the photo did not see it)");
+    }
+    if (model.closed && !plan.attached[c]) {
+      scene.info.push_back("synthesized: " + model.name + "_near_end, the wall closing the corridor " +
+                           std::to_string(static_cast<int>(std::lround(kClosedBehindCameraM))) +
+                           " m behind the photo's camera, in the far wall's colour");
+    }
+    if (model.closed && !plan.attached[c]) {  // the wall closing the corridor behind the camera
+      Panel nearEnd = surfacePanel(Surface::kNearEnd, model.box);
+      nearEnd.origin.z = model.untexturedNearM;
+      nearEnd.maxCellM = cellM;
+      const glm::vec4 color(model.nearEndColor, 1.0f);
+      addShape(panelMesh(nearEnd, options.lit ? std::nullopt : std::optional(color)), untextured(model.nearEndColor),
+               "near_end");
     }
     if (plan.attached[c]) {  // close the near end around the opening into the host
       Panel nearEnd = surfacePanel(Surface::kNearEnd, model.box);

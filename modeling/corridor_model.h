@@ -12,6 +12,7 @@
 
 #include "base/result.h"
 #include "modeling/layout.h"
+#include "modeling/synthesis.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/scene.h"
 #include "metrology/measure.h"
@@ -26,6 +27,15 @@ struct ModelOptions {
   // give 4096 x 2000 and more, slow to cut and write for detail only the nearest metre
   // of a wall has); the density is scaled down evenly beyond it.
   double maxTexturePixels = 3.0e6;
+  // true: only what the photo shows, as cut from it (`build --photo-only`); false: detail
+  // synthesized where the photo saw a surface coarsely, and texture where it did not see
+  // it, with the corridor closed behind the camera (modeling/synthesis.h).
+  bool photoOnly = false;
+  // With synthesis, also add detail where the photo saw a surface coarsely (`build
+  // --detail`). Off by default: the renderer samples a texture cut from a photo at the
+  // photo's own resolution (scene.frag), so from the photo's camera the added detail
+  // shows unfiltered and the reprojection loses 1-14 dB (corridor_a: 44.8 to 30.9 dB).
+  bool detail = false;
 };
 
 // The part of one surface that has a texture, and the texture.
@@ -44,10 +54,19 @@ struct CorridorModel {
   int photoWidth = 0;
   int photoHeight = 0;
   // How far towards the camera (z > 0) the photo shows the floor, walls and ceiling;
-  // beyond that, up to behind the camera, surfaces continue untextured.
+  // beyond that, up to behind the camera (untexturedNearM), surfaces continue: with
+  // synthesis, textured (`extensions`) up to a wall closing the corridor there (the
+  // near-end wall, in the far wall's look); photo-only, untextured and open.
   double photoNearM = 0;
   double untexturedNearM = 0;
+  bool closed = false;  // the near-end wall at untexturedNearM
   std::array<std::optional<SurfaceTexture>, 5> textures;  // far wall, left, right, floor, ceiling
+  // Synthesized (ModelOptions::photoOnly false): each surface's texture from photoNearM
+  // to untexturedNearM (none for the far wall), what synthesis did to each texture, and
+  // the near-end wall's colour (the far wall's median: its look without its door).
+  std::array<std::optional<SurfaceTexture>, 5> extensions;
+  std::array<SynthesisStats, 5> synthesis{};
+  glm::vec3 nearEndColor{0.5f};
   // Per surface, for its untextured parts: the mean of the photo's pixels where it
   // shows the surface, averaged as stored (sRGB-encoded, not linear light), 0..1.
   std::array<glm::vec3, 5> meanColor{};

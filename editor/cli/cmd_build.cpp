@@ -28,6 +28,12 @@ constexpr const char* kUsage =
     "                        seed paper's rendering); default: photo-lit, the textures\n"
     "                        carry the photo's own light and are drawn unlit\n"
     "  --px-per-m N          texture resolution (default: the photo's own best on each plane)\n"
+    "  --photo-only          only what the photo shows: no detail added where it saw a\n"
+    "                        surface coarsely, no texture where it did not see it, and\n"
+    "                        the corridor left open behind the camera\n"
+    "  --detail              also add detail where the photo saw a surface coarsely (sharper\n"
+    "                        views from inside the corridor; the view from the photo's own\n"
+    "                        camera loses some of its match with the photo)\n"
     "  --jpeg                textures as JPEG instead of PNG\n"
     "  --sigma-px S          corner standard deviation for the printed ± (default 1)\n";
 
@@ -65,6 +71,8 @@ int runBuild(Args& args) {
   const auto sigmaText = args.value("--sigma-px");
   modeling::ModelOptions options;
   options.lit = args.flag("--lit");
+  options.photoOnly = args.flag("--photo-only");
+  options.detail = args.flag("--detail");
   engine::VrmlWriteOptions vrmlOptions;
   vrmlOptions.jpegTextures = args.flag("--jpeg");
   const std::vector<std::string> shots = args.positionals();

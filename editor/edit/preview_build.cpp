@@ -63,6 +63,7 @@ modeling::ModelOptions previewModelOptions(PreviewResolution resolution) {
   if (resolution == PreviewResolution::kReduced) {
     options.maxTextureSide = 1024;
     options.maxTexturePixels = 0.08e6;
+    options.photoOnly = true;  // the drag's model: as fast as it can be; the full one has everything
   }
   return options;
 }

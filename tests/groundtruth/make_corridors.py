@@ -6,6 +6,10 @@ usage:
       writes NAME.pov, NAME.json (shot part + answers, the form of ../shared/corridors)
       and renders NAME.png with povray for every scene below. A scene whose .pov is
       unchanged and whose .png is there is not rendered again.
+  make_corridors.py views OUTDIR [--only NAME,...]
+      renders every scene from the novel-view cameras below (NOVEL_VIEWS: cameras the
+      photo was not taken from) as NAME_view_KIND.png with NAME_view_KIND.json (the
+      camera, as `view` writes it); unchanged .pov files are not rendered again.
   make_corridors.py view NAME OUT.png --eye X Y Z [--ypr YAW PITCH ROLL] [--size WxH]
                          [--focal-px F]
       renders scene NAME from another camera, given in the model frame (README:
@@ -73,6 +77,15 @@ SCENES = [
          eye_x=0.5, eye_y=1.65, yaw=-9.0, pitch=3.0, roll=-6.0, principal=(541.5, 360.0),
          walls="plaster", floor="wood_floor", fill_y=1.9),
 ]
+
+# Cameras the photo was not taken from (issue 14's novel views), in the model frame, at
+# the photo's height on the corridor's centre line; 640 px wide, the photo's field of view.
+NOVEL_VIEW_WIDTH = 640
+NOVEL_VIEWS = {
+    "ahead": lambda s: ([0.0, s["eye_y"], -s["length"] / 2.0], [0.0, 0.0, 0.0]),  # mid-corridor, looking ahead
+    "turned": lambda s: ([0.0, s["eye_y"], -s["length"] / 4.0], [35.0, 0.0, 0.0]),  # a quarter in, 35 deg to the left wall
+    "back": lambda s: ([0.0, s["eye_y"], -s["length"] + 1.0], [180.0, 0.0, 0.0]),  # near the far wall, looking back
+}
 
 CORNERS = ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"]
 PLANES = {"front_wall": ["P1", "P2", "P4", "P3"], "left_wall": ["P7", "P1", "P3", "P5"],
@@ -245,19 +258,43 @@ def cmd_scenes(args):
             print("rendered %s" % (base + ".png"))
 
 
+def render_view(scene, camera, out_png, always=True):
+    """Renders `scene` from `camera` into out_png, with the camera in a JSON beside it."""
+    base = os.path.splitext(out_png)[0]
+    changed = write_if_changed(base + ".pov", scene_pov(scene, camera))
+    if always or changed or not os.path.exists(out_png):
+        render(base + ".pov", out_png, camera.size)
+        print("rendered %s" % out_png)
+    w, h = camera.size
+    write_if_changed(base + ".json", json.dumps({"scene": scene["name"], "image_size": [w, h], "focal_px": camera.focal_px,
+                                                 "principal_point": camera.principal, "eye_m": camera.eye,
+                                                 "yaw_deg": camera.ypr[0], "pitch_deg": camera.ypr[1],
+                                                 "roll_deg": camera.ypr[2]}, indent=1) + "\n")
+
+
 def cmd_view(args):
     scene = next((s for s in SCENES if s["name"] == args.name), None)
     if not scene:
         sys.exit("make_corridors: no scene %r (have %s)" % (args.name, ", ".join(s["name"] for s in SCENES)))
     w, h = (int(x) for x in args.size.split("x"))
     camera = Camera(args.eye, args.ypr, (w, h), args.focal_px or scene["focal_px"] * w / scene["size"][0])
-    base = os.path.splitext(args.out)[0]
-    write_if_changed(base + ".pov", scene_pov(scene, camera))
-    render(base + ".pov", args.out, (w, h))
-    write_if_changed(base + ".json", json.dumps({"scene": scene["name"], "image_size": [w, h], "focal_px": camera.focal_px,
-                                                 "principal_point": camera.principal, "eye_m": camera.eye,
-                                                 "yaw_deg": camera.ypr[0], "pitch_deg": camera.ypr[1],
-                                                 "roll_deg": camera.ypr[2]}, indent=1) + "\n")
+    render_view(scene, camera, args.out)
+
+
+def cmd_views(args):
+    if not shutil.which("povray"):
+        sys.exit("make_corridors: povray is not installed (scripts/install-deps.sh installs it)")
+    os.makedirs(args.out, exist_ok=True)
+    only = set(args.only.split(",")) if args.only else None
+    for s in SCENES:
+        if only and s["name"] not in only:
+            continue
+        w = NOVEL_VIEW_WIDTH
+        h = int(round(w * s["size"][1] / s["size"][0]))
+        for kind, place in NOVEL_VIEWS.items():
+            eye, ypr = place(s)
+            camera = Camera(eye, ypr, (w, h), s["focal_px"] * w / s["size"][0])
+            render_view(s, camera, os.path.join(args.out, "%s_view_%s.png" % (s["name"], kind)), always=False)
 
 
 def main():
@@ -268,6 +305,10 @@ def main():
     p.add_argument("--only")
     p.add_argument("--no-render", action="store_true")
     p.set_defaults(func=cmd_scenes)
+    vs = sub.add_parser("views")
+    vs.add_argument("out")
+    vs.add_argument("--only")
+    vs.set_defaults(func=cmd_views)
     v = sub.add_parser("view")
     v.add_argument("name")
     v.add_argument("out")

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "engine/scene/collision.h"
 #include "metrology/measure.h"
@@ -51,12 +52,70 @@ TEST_F(CorridorModelTest, TexturesRunTowardsTheCameraAsFarAsThePhotoShows) {
   // 3.9 m (where the image's bottom row meets it: depth f h / (v - cv) = 3.45 m).
   EXPECT_GT(model->photoNearM, 0.8);
   EXPECT_LT(model->photoNearM, 4.5);
-  EXPECT_NEAR(model->untexturedNearM, measurement_.pose.positionM.z + 1.0, 1e-9);
+  // Synthesized (the default): the corridor runs on 3 m behind the camera and is closed
+  // there; photo-only: 1 m, open.
+  EXPECT_NEAR(model->untexturedNearM, measurement_.pose.positionM.z + 3.0, 1e-9);
+  EXPECT_TRUE(model->closed);
   for (const auto& tex : model->textures) {
     ASSERT_TRUE(tex);
     EXPECT_GT(tex->coveredFraction, 0.5);
     EXPECT_GE(tex->image.width, 2);
   }
+  ModelOptions photoOnly;
+  photoOnly.photoOnly = true;
+  auto open = makeCorridorModel("a", photo_, measurement_, false, photoOnly);
+  ASSERT_TRUE(open.ok());
+  EXPECT_NEAR(open->untexturedNearM, measurement_.pose.positionM.z + 1.0, 1e-9);
+  EXPECT_FALSE(open->closed);
+  for (const auto& extension : open->extensions) EXPECT_FALSE(extension);
+}
+
+// What the photo did not see is synthesized from what it saw of the same surface: the
+// texture has no flat mean-colour part, and each surface's strip towards and behind the
+// camera carries on from the texture's near edge without a seam.
+TEST_F(CorridorModelTest, UnseenPartsContinueTheSurfaceWithoutASeam) {
+  auto model = makeCorridorModel("a", photo_, measurement_, false, {});
+  ASSERT_TRUE(model.ok());
+  ModelOptions photoOnly;
+  photoOnly.photoOnly = true;
+  auto open = makeCorridorModel("a", photo_, measurement_, false, photoOnly);
+  ASSERT_TRUE(open.ok());
+  const auto mat = [](const engine::Image& image) {
+    return cv::Mat(image.height, image.width, CV_8UC4, const_cast<uint8_t*>(image.rgba.data()));
+  };
+  for (Surface surface : {Surface::kLeftWall, Surface::kRightWall, Surface::kFloor, Surface::kCeiling}) {
+    const int s = static_cast<int>(surface);
+    SCOPED_TRACE(surfaceName(surface));
+    ASSERT_TRUE(model->extensions[s]);
+    const SynthesisStats& stats = model->synthesis[s];
+    EXPECT_GT(stats.exemplarColumns, 32);
+    EXPECT_GT(stats.filledFraction, 0.05);
+    // The photo-only texture's unseen part is one flat colour; the synthesized one is
+    // as varied as the part the photo saw (brick walls, a checker floor).
+    const SurfaceTexture& filled = *model->textures[s];
+    const SurfaceTexture& flat = *open->textures[s];
+    ASSERT_EQ(filled.image.width, flat.image.width);
+    cv::Mat diff;
+    cv::absdiff(mat(filled.image), mat(flat.image), diff);
+    cv::Mat changed;
+    cv::cvtColor(diff, changed, cv::COLOR_RGBA2GRAY);
+    const double changedFraction = cv::countNonZero(changed > 8) / double(changed.total());
+    const bool walls = surface == Surface::kLeftWall || surface == Surface::kRightWall;
+    if (walls || surface == Surface::kFloor) {  // brick and checker (the ceiling is plain)
+      EXPECT_GT(changedFraction, 0.5 * (1.0 - filled.coveredFraction)) << "the filled texels differ from the flat fill";
+      cv::Scalar mean, stddev;
+      cv::meanStdDev(mat(model->extensions[s]->image), mean, stddev);
+      EXPECT_GT(stddev[0], 10.0) << "the strip carries the surface's pattern, not a flat colour";
+    }
+  }
+  // The left wall's strip (columns from the camera's side) meets the texture's first
+  // column (the near edge): the last strip column and the first texture column are alike.
+  const cv::Mat strip = mat(model->extensions[1]->image), wall = mat(model->textures[1]->image);
+  ASSERT_EQ(strip.rows, wall.rows);
+  const double seam = cv::norm(strip.col(strip.cols - 1), wall.col(0), cv::NORM_L1) / (4.0 * wall.rows);
+  const double within = cv::norm(wall.col(0), wall.col(1), cv::NORM_L1) / (4.0 * wall.rows);
+  std::printf("left wall: mean step across the seam %.1f, between the texture's first two columns %.1f\n", seam, within);
+  EXPECT_LT(seam, 3 * within + 4);
 }
 
 // Each texture's pixel at a model point has the colour the photo has where the
@@ -143,7 +202,10 @@ TEST_F(CorridorModelTest, SceneHasFivePlanesNearStripsViewpointsAndNoMaterials) 
   auto plan = planBuilding(chainLayout({"a.json"}), boxes);
   ASSERT_TRUE(plan.ok());
   const engine::Scene scene = makeBuildingScene({*model}, *plan, {});
-  EXPECT_EQ(scene.shapes.size(), 9u);  // five planes, four untextured strips (not the far wall)
+  EXPECT_EQ(scene.shapes.size(), 10u);  // five planes, four strips (not the far wall), the near-end wall
+  int synthesizedLines = 0;
+  for (const std::string& line : scene.info) synthesizedLines += line.rfind("synthesized: ", 0) == 0;
+  EXPECT_GE(synthesizedLines, 9) << "the model says which parts are synthesized";
   for (const auto& shape : scene.shapes) EXPECT_FALSE(shape.appearance && shape.appearance->material);
   ASSERT_GE(scene.viewpoints.size(), 4u);
   EXPECT_EQ(scene.viewpoints[0].description, "Photo");

@@ -229,10 +229,10 @@ TEST(BuildCommand, LayoutPlacesAttachesAndOpensCorridors) {
   // towards its camera; an attached corridor's five planes only (nothing of it runs
   // towards its camera, and its near end is all opening: it is narrower and lower than
   // the hall).
-  EXPECT_EQ(shapesOf(*scene, "hall"), 9);
+  EXPECT_EQ(shapesOf(*scene, "hall"), 10);  // with the wall closing it behind the camera
   EXPECT_EQ(shapesOf(*scene, "wing"), 5);
   EXPECT_EQ(shapesOf(*scene, "end"), 5);
-  EXPECT_EQ(scene->shapes.size(), 19u) << "every shape belongs to one of the three corridors";
+  EXPECT_EQ(scene->shapes.size(), 20u) << "every shape belongs to one of the three corridors";
 
   // Each attached corridor stands where the layout puts it.
   const auto expectBox = [&](const std::string& name, glm::dvec3 localMin, glm::dvec3 localMax) {
@@ -293,12 +293,12 @@ TEST(BuildCommand, SeveralShotsAreJoinedEndToEnd) {
   const fs::path dir = freshDir("chain");
   const CommandRun run = photowalk("build " + shellQuoted(a.shot) + " " + shellQuoted(c.shot) + " -o " + shellQuoted(dir / "chain.wrl"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("(14 shapes, 5 viewpoints)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("(15 shapes, 5 viewpoints)"), std::string::npos) << run.output;
   auto scene = readModel(dir / "chain.wrl");
   ASSERT_TRUE(scene);
   EXPECT_FALSE(hasNonFiniteNumber(readText(dir / "chain.wrl")));
   constexpr double kToleranceM = 2e-3;
-  EXPECT_EQ(shapesOf(*scene, "corridor_a"), 9);
+  EXPECT_EQ(shapesOf(*scene, "corridor_a"), 10);
   EXPECT_EQ(shapesOf(*scene, "corridor_c"), 5);
 
   const engine::Bounds first = boundsOf(*scene, "corridor_a"), second = boundsOf(*scene, "corridor_c");
@@ -346,8 +346,8 @@ TEST(BuildCommand, LitAddsMaterialsCeilingLightsAndTheHeadlight) {
                          [](const engine::Shape& s) { return s.appearance && s.appearance->material; });
   };
 
-  EXPECT_EQ(lit->shapes.size(), 14u);
-  EXPECT_EQ(withMaterial(*lit), 14);
+  EXPECT_EQ(lit->shapes.size(), 15u);
+  EXPECT_EQ(withMaterial(*lit), 15);
   EXPECT_TRUE(lit->navigation.headlight);
   // a: 9.5 m, 2 lamps at 2.375 and 7.125 m; c: 5 m, 1 lamp in its middle, 12 m in.
   struct Lamp {
@@ -367,7 +367,7 @@ TEST(BuildCommand, LitAddsMaterialsCeilingLightsAndTheHeadlight) {
     EXPECT_NEAR(lights[i].position.z, expected[i].z, 2e-3) << i;
   }
 
-  EXPECT_EQ(photoLit->shapes.size(), 14u);
+  EXPECT_EQ(photoLit->shapes.size(), 15u);
   EXPECT_EQ(withMaterial(*photoLit), 0);
   EXPECT_TRUE(photoLit->lights.empty());
   EXPECT_FALSE(photoLit->navigation.headlight);
@@ -395,6 +395,9 @@ TEST(BuildCommand, JpegTexturesAreWrittenReferencedAndRenderAlike) {
   const std::vector<std::string> planes = {"ceiling", "far_wall", "floor", "left_wall", "right_wall"};
   std::vector<std::string> expectedFiles = {"m.wrl"};
   for (const std::string& p : planes) expectedFiles.push_back("m_corridor_a_" + p + ".jpg");
+  for (const char* p : {"ceiling", "floor", "left_wall", "right_wall"}) {
+    expectedFiles.push_back("m_corridor_a_" + std::string(p) + "_near.jpg");  // the synthesized strips
+  }
   std::sort(expectedFiles.begin(), expectedFiles.end());
   EXPECT_EQ(entriesUnder(dir / "jpeg"), expectedFiles);
 
@@ -468,7 +471,7 @@ TEST(BuildCommand, GzipModelsReadBackToTheSameScene) {
   for (const fs::path& out : {convertedWrz, convertedGz}) {
     run = photowalk("convert " + shellQuoted(plain) + " " + shellQuoted(out));
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    EXPECT_NE(run.output.find("9 shapes, 0 lights, 4 viewpoints"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("10 shapes, 0 lights, 4 viewpoints"), std::string::npos) << run.output;
   }
 
   const std::string plainText = readText(plain), wrzBytes = readText(wrz);
@@ -486,7 +489,7 @@ TEST(BuildCommand, GzipModelsReadBackToTheSameScene) {
     ASSERT_TRUE(scene) << out;
     expectSameScene(*scene, *expected, out.filename().string());
   }
-  EXPECT_EQ(filesEndingIn(dir / "converted", ".png").size(), 5u) << "the converted models' textures beside them";
+  EXPECT_EQ(filesEndingIn(dir / "converted", ".png").size(), 9u) << "the converted models' textures beside them";
 
   // The same frame from each (the Entrance viewpoint, small): lavapipe draws the same
   // scene the same way, pixel for pixel.
@@ -513,10 +516,25 @@ TEST(BuildCommand, MakesTheOutputFolder) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_TRUE(fs::is_regular_file(model));
   EXPECT_TRUE(fs::is_regular_file(gltf));
-  EXPECT_EQ(filesEndingIn(dir / "new" / "dir", ".png").size(), 5u) << "the textures beside the model";
+  EXPECT_EQ(filesEndingIn(dir / "new" / "dir", ".png").size(), 9u) << "the textures beside the model (4 of them strips)";
+  auto scene = readModel(model);
+  ASSERT_TRUE(scene);
+  EXPECT_EQ(scene->shapes.size(), 10u);
+}
+
+// --photo-only keeps only what the photo shows: five textures, untextured strips, the
+// corridor open behind the camera, and no line saying anything is synthesized.
+TEST(BuildCommand, PhotoOnlyKeepsWhatThePhotoShows) {
+  const GroundTruth a = loadGroundTruth("corridor_a");
+  const fs::path dir = freshDir("photo_only");
+  const fs::path model = dir / "m.wrl";
+  const CommandRun run = photowalk("build " + shellQuoted(a.shot) + " -o " + shellQuoted(model) + " --photo-only");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(filesEndingIn(dir, ".png").size(), 5u);
   auto scene = readModel(model);
   ASSERT_TRUE(scene);
   EXPECT_EQ(scene->shapes.size(), 9u);
+  for (const std::string& line : scene->info) EXPECT_NE(line.rfind("synthesized: ", 0), 0u) << line;
 }
 
 // ---------------------------------------------------------------------------------

@@ -1,0 +1,473 @@
+#include "modeling/synthesis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace pw::modeling {
+namespace {
+
+constexpr int kCell = 16;               // the footprint is evaluated once per cell
+// A photo pixel's spread in texels, relative to the least anywhere on the surface: at
+// most this for the exemplar; beyond the other, detail is added.
+constexpr double kSharpSpread = 2.5;
+constexpr double kCoarseSpread = 1.4;  // times the exemplar's own
+constexpr double kBlurPerSpread = 0.45;  // Gaussian sigma of a photo pixel's blur, per texel of its spread
+// How much of the exemplar's detail a tile gets: the phase found from the coarse
+// evidence is not exact, and detail out of phase costs more than missing detail (half:
+// no scene's novel views lose more than 0.4 dB against the photo-only model, and the
+// high-frequency energy doubles); surfaces that do not repeat, whose detail can only
+// be plausible, get less again.
+constexpr double kDetailGain = 0.5;
+constexpr double kRandomDetailGain = 0.7;
+constexpr int kTile = 48;
+constexpr int kStride = 36;
+
+// A photo pixel's footprint on the texture at one cell.
+struct Cell {
+  bool covered = false;
+  double spreadX = 0, spreadY = 0;  // texels one photo pixel spans along x and y
+};
+
+struct Grid {
+  int cols = 0, rows = 0;
+  std::vector<Cell> cells;
+  const Cell& at(int cx, int cy) const { return cells[static_cast<size_t>(cy) * cols + cx]; }
+};
+
+bool insidePhoto(const glm::dvec2& p, cv::Size size) {
+  return p.x >= -0.5 && p.y >= -0.5 && p.x <= size.width - 0.5 && p.y <= size.height - 0.5;
+}
+
+Grid footprints(cv::Size textureSize, const PhotoOfTexel& photoOf, cv::Size photoSize) {
+  Grid g;
+  g.cols = (textureSize.width + kCell - 1) / kCell;
+  g.rows = (textureSize.height + kCell - 1) / kCell;
+  g.cells.resize(static_cast<size_t>(g.cols) * g.rows);
+  for (int cy = 0; cy < g.rows; ++cy) {
+    for (int cx = 0; cx < g.cols; ++cx) {
+      const double x = std::min(cx * kCell + 0.5 * kCell, textureSize.width - 1.0);
+      const double y = std::min(cy * kCell + 0.5 * kCell, textureSize.height - 1.0);
+      const auto p = photoOf(x, y), px = photoOf(x + 1, y), py = photoOf(x, y + 1);
+      Cell& c = g.cells[static_cast<size_t>(cy) * g.cols + cx];
+      if (!p || !px || !py || !insidePhoto(*p, photoSize)) continue;
+      const glm::dvec2 jx = *px - *p, jy = *py - *p;  // photo pixels per texel along x, y
+      const double det = jx.x * jy.y - jy.x * jx.y;
+      if (!(std::abs(det) > 1e-12)) continue;
+      // Texel offsets of a photo pixel's offsets: the inverse; a pixel's extent along x
+      // and y is the sum of the absolute entries of each row.
+      c.covered = true;
+      c.spreadX = (std::abs(jy.y) + std::abs(jy.x)) / std::abs(det);
+      c.spreadY = (std::abs(jx.y) + std::abs(jx.x)) / std::abs(det);
+    }
+  }
+  return g;
+}
+
+// Texel coverage: a cell whose four corners the photo shows is shown whole (the photo's
+// frame maps to a convex region of the plane); the others are evaluated per texel.
+cv::Mat1b coverage(cv::Size size, const PhotoOfTexel& photoOf, cv::Size photoSize) {
+  cv::Mat1b mask(size, uint8_t(0));
+  const auto shows = [&](double x, double y) {
+    const auto p = photoOf(x, y);
+    return p && insidePhoto(*p, photoSize);
+  };
+  for (int y0 = 0; y0 < size.height; y0 += kCell) {
+    for (int x0 = 0; x0 < size.width; x0 += kCell) {
+      const int x1 = std::min(size.width, x0 + kCell) - 1, y1 = std::min(size.height, y0 + kCell) - 1;
+      const int corners = shows(x0, y0) + shows(x1, y0) + shows(x0, y1) + shows(x1, y1);
+      if (corners == 4) {
+        mask(cv::Rect(x0, y0, x1 - x0 + 1, y1 - y0 + 1)).setTo(255);
+      } else {
+        for (int y = y0; y <= y1; ++y) {
+          for (int x = x0; x <= x1; ++x) mask(y, x) = shows(x, y) ? 255 : 0;
+        }
+      }
+    }
+  }
+  return mask;
+}
+
+double sharpness(const Cell& c) { return std::max(c.spreadX, c.spreadY); }
+
+double leastSpread(const Grid& g) {
+  double least = 0;
+  for (const Cell& c : g.cells) {
+    if (c.covered && (least == 0 || sharpness(c) < least)) least = sharpness(c);
+  }
+  return least;
+}
+
+// The exemplar: the longest run of cell columns where nearly every cell is sharp.
+std::pair<int, int> exemplarColumns(const Grid& g, int width, double least) {
+  int best0 = 0, best1 = 0, run0 = -1;
+  for (int cx = 0; cx <= g.cols; ++cx) {
+    bool sharp = false;
+    if (cx < g.cols) {
+      int n = 0;
+      for (int cy = 0; cy < g.rows; ++cy) {
+        const Cell& c = g.at(cx, cy);
+        n += c.covered && sharpness(c) <= kSharpSpread * least;
+      }
+      sharp = n >= 0.5 * g.rows;
+    }
+    if (sharp && run0 < 0) run0 = cx;
+    if (!sharp && run0 >= 0) {
+      if (cx - run0 > best1 - best0) best0 = run0, best1 = cx;
+      run0 = -1;
+    }
+  }
+  return {best0 * kCell, std::min(width, best1 * kCell)};
+}
+
+// The period along x of the exemplar's fine structure (texels, sub-texel), 0 when it
+// does not repeat: the mean over rows of each row's autocorrelation, each row over the
+// longest part of it the photo shows (at least half the exemplar).
+double periodAlongX(const cv::Mat1f& lum, const cv::Mat1b& shown) {
+  const int n = lum.cols;
+  if (n < 24) return 0;
+  cv::Mat1f smooth, hp;
+  cv::GaussianBlur(lum, smooth, {0, 0}, 6.0);
+  hp = lum - smooth;
+  // Outliers (a dark band, a door frame) would swamp the pattern's own correlation.
+  cv::Scalar m, sd;
+  cv::meanStdDev(hp, m, sd, shown);
+  cv::min(hp, 2.5 * sd[0], hp);
+  cv::max(hp, -2.5 * sd[0], hp);
+  const int padded = cv::getOptimalDFTSize(2 * n);
+  cv::Mat1f rows = cv::Mat1f::zeros(lum.rows, padded);
+  std::vector<int> lengths;
+  int used = 0;
+  for (int y = 0; y < lum.rows; ++y) {
+    int best0 = 0, best1 = 0, run0 = -1;
+    for (int x = 0; x <= n; ++x) {
+      const bool on = x < n && shown(y, x);
+      if (on && run0 < 0) run0 = x;
+      if (!on && run0 >= 0) {
+        if (x - run0 > best1 - best0) best0 = run0, best1 = x;
+        run0 = -1;
+      }
+    }
+    if (best1 - best0 < n / 2) continue;
+    hp(cv::Rect(best0, y, best1 - best0, 1)).copyTo(rows(cv::Rect(0, used, best1 - best0, 1)));
+    lengths.push_back(best1 - best0);
+    ++used;
+  }
+  if (used < 4) return 0;
+  rows = rows.rowRange(0, used).clone();
+  cv::Mat spectrum;
+  cv::dft(rows, spectrum, cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
+  cv::mulSpectrums(spectrum, spectrum, spectrum, cv::DFT_ROWS, true);
+  cv::Mat1f acf;
+  cv::dft(spectrum, acf, cv::DFT_ROWS | cv::DFT_INVERSE | cv::DFT_REAL_OUTPUT);
+  std::vector<double> r(n, 0.0), overlap(n, 0.0);
+  for (int y = 0; y < used; ++y) {
+    for (int lag = 0; lag < lengths[y]; ++lag) r[lag] += acf(y, lag), overlap[lag] += lengths[y] - lag;
+  }
+  if (!(r[0] > 1e-6)) return 0;
+  const double zero = r[0] / overlap[0];
+  for (int lag = 0; lag < n; ++lag) r[lag] = overlap[lag] > 0 ? r[lag] / overlap[lag] / zero : 0.0;  // unbiased
+  const int lo = 6, hi = n / 2;
+  if (hi <= lo + 1) return 0;
+  double best = 0;
+  for (int lag = lo; lag < hi; ++lag) best = std::max(best, r[lag]);
+  if (best < 0.4) return 0;
+  // The fundamental: the first local maximum nearly as strong as the best.
+  for (int lag = lo; lag < hi; ++lag) {
+    if (r[lag] >= 0.85 * best && r[lag] >= r[lag - 1] && r[lag] >= r[lag + 1]) {
+      const double a = r[lag - 1], b = r[lag], c = r[lag + 1], d = a - 2 * b + c;
+      return lag + (std::abs(d) > 1e-12 ? 0.5 * (a - c) / d : 0.0);
+    }
+  }
+  return 0;
+}
+
+// Half-octave blur levels, up to a spread of 16 texels (beyond, the photo kept the
+// coarser bands itself, and wider blurs would cost more than they add).
+int level(double spread) { return std::clamp(static_cast<int>(std::lround(2.0 * std::log2(std::max(1.0, spread)))), 0, 8); }
+double spreadOfLevel(int q) { return std::pow(2.0, q / 2.0); }
+
+// The exemplar blurred as the photo blurs a cell of spread (2^(qx/2), 2^(qy/2)), with
+// the same shrunk by (kx, ky) for matching.
+struct Blurred {
+  cv::Mat3f color;  // the exemplar, blurred
+  cv::Mat1f small;  // its luminance, shrunk
+  int kx = 1, ky = 1;
+};
+
+// The median spreads of the exemplar's cells: the blur it has itself.
+glm::dvec2 exemplarSpread(const Grid& g, int x0, int x1) {
+  std::vector<double> xs, ys;
+  for (int cy = 0; cy < g.rows; ++cy) {
+    for (int cx = x0 / kCell; cx < (x1 + kCell - 1) / kCell && cx < g.cols; ++cx) {
+      if (g.at(cx, cy).covered) xs.push_back(g.at(cx, cy).spreadX), ys.push_back(g.at(cx, cy).spreadY);
+    }
+  }
+  if (xs.empty()) return {1, 1};
+  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
+  std::nth_element(ys.begin(), ys.begin() + ys.size() / 2, ys.end());
+  return {xs[xs.size() / 2], ys[ys.size() / 2]};
+}
+
+// Exemplar columns unlike the rest (a band, a door frame): no source of detail. Each
+// column's mean is compared with the median of the columns whole periods away (of all
+// columns when the surface does not repeat).
+std::vector<bool> oddColumns(const cv::Mat1f& exemplarLum, double period) {
+  cv::Mat1f means;
+  cv::reduce(exemplarLum, means, 0, cv::REDUCE_AVG);
+  const std::vector<float> v(means.begin(), means.end());
+  const int n = static_cast<int>(v.size());
+  const auto medianOf = [](std::vector<float> x) {
+    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+    return x[x.size() / 2];
+  };
+  std::vector<float> residual(n);
+  const float overall = n > 0 ? medianOf(v) : 0.0f;
+  for (int i = 0; i < n; ++i) {
+    if (period <= 0) {
+      residual[i] = v[i] - overall;
+      continue;
+    }
+    std::vector<float> same;
+    for (double x = std::fmod(i, period); x < n; x += period) same.push_back(v[std::min(n - 1, static_cast<int>(std::lround(x)))]);
+    residual[i] = v[i] - medianOf(same);
+  }
+  std::vector<bool> odd(n, false);
+  if (n == 0) return odd;
+  std::vector<float> dev;
+  for (float r : residual) dev.push_back(std::abs(r));
+  const float mad = std::max(1.0f, medianOf(dev));
+  for (int i = 0; i < n; ++i) odd[i] = std::abs(residual[i]) > std::max(4 * mad, 12.0f);
+  return odd;
+}
+
+void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x0, int x1, double period,
+               SynthesisStats& stats) {
+  const int width = texture.cols, height = texture.rows;
+  const int exemplarWidth = x1 - x0;
+  if (exemplarWidth < kTile + 8 || height < kTile) return;
+  const glm::dvec2 own = exemplarSpread(grid, x0, x1);
+  const cv::Mat3f exemplar = texture(cv::Range::all(), cv::Range(x0, x1)).clone();
+  const cv::Mat1f exemplarLum = lum(cv::Range::all(), cv::Range(x0, x1));
+  const std::vector<bool> odd = oddColumns(exemplarLum, period);
+  std::vector<int> oddBefore(exemplarWidth + 1, 0);  // prefix counts
+  for (int i = 0; i < exemplarWidth; ++i) oddBefore[i + 1] = oddBefore[i] + odd[i];
+  const auto clean = [&](int sx) { return oddBefore[sx + kTile] - oddBefore[sx] == 0; };
+  std::map<std::pair<int, int>, Blurred> cache;
+  const auto blurredFor = [&](int qx, int qy) -> const Blurred& {
+    auto it = cache.find({qx, qy});
+    if (it != cache.end()) return it->second;
+    Blurred b;
+    const double sx = spreadOfLevel(qx), sy = spreadOfLevel(qy);
+    cv::GaussianBlur(exemplar, b.color, {0, 0}, kBlurPerSpread * sx, kBlurPerSpread * sy, cv::BORDER_REFLECT);
+    cv::Mat1f l;
+    cv::GaussianBlur(exemplarLum, l, {0, 0}, kBlurPerSpread * sx, kBlurPerSpread * sy, cv::BORDER_REFLECT);
+    b.kx = std::max(2, static_cast<int>(sx / 2));
+    b.ky = std::max(2, static_cast<int>(sy / 2));
+    cv::resize(l, b.small, {std::max(1, l.cols / b.kx), std::max(1, l.rows / b.ky)}, 0, 0, cv::INTER_AREA);
+    return cache.emplace(std::make_pair(qx, qy), std::move(b)).first->second;
+  };
+
+  cv::Mat3f detail = cv::Mat3f::zeros(texture.size());
+  cv::Mat1f weight = cv::Mat1f::zeros(texture.size());
+  std::vector<float> window(kTile);
+  for (int i = 0; i < kTile; ++i) window[i] = static_cast<float>(std::pow(std::sin(CV_PI * (i + 0.5) / kTile), 2));
+  // Tiles from the exemplar outwards, so that a periodic surface's phase, corrected
+  // where the evidence is clear, carries on to where it is not.
+  std::vector<int> columns;
+  for (int tx = 0; tx + kTile <= width; tx += std::min(kStride, std::max(1, width - kTile - tx))) {
+    if (tx + kTile <= x0 || tx >= x1) columns.push_back(tx);
+  }
+  std::sort(columns.begin(), columns.end(), [&](int a, int b) {
+    const auto d = [&](int t) { return t < x0 ? x0 - t : t - x1; };
+    return d(a) < d(b);
+  });
+  const double centre = x0 + 0.5 * (exemplarWidth - kTile);
+  for (int ty = 0; ty + kTile <= height; ty += std::min(kStride, std::max(1, height - kTile - ty))) {
+    double shiftNear = 0, shiftFar = 0;  // phase corrections found so far, on either side
+    for (int tx : columns) {
+      const Cell& c = grid.at(std::min(grid.cols - 1, (tx + kTile / 2) / kCell), std::min(grid.rows - 1, (ty + kTile / 2) / kCell));
+      if (!c.covered || sharpness(c) < kCoarseSpread * std::max(own.x, own.y)) continue;
+      // The blur the photo adds here beyond the exemplar's own.
+      const int qx = level(std::sqrt(std::max(1.0, c.spreadX * c.spreadX - own.x * own.x)));
+      const int qy = level(std::sqrt(std::max(1.0, c.spreadY * c.spreadY - own.y * own.y)));
+      const Blurred& b = blurredFor(qx, qy);
+      double& shift = tx < x0 ? shiftNear : shiftFar;
+      // Where to look: periodic, whole periods from the tile (and the phase found so
+      // far); else around a position of its own.
+      double predicted;
+      int halfWindow;
+      if (period > 0) {
+        predicted = tx + shift - std::round((tx + shift - centre) / period) * period - x0;
+        halfWindow = static_cast<int>(std::ceil(0.5 * period));
+      } else {
+        predicted = static_cast<double>((static_cast<unsigned>(tx) * 2654435761u + static_cast<unsigned>(ty) * 40503u) %
+                                        static_cast<unsigned>(exemplarWidth - kTile));
+        halfWindow = 48;
+      }
+      const int lo = std::clamp(static_cast<int>(predicted) - halfWindow, 0, exemplarWidth - kTile);
+      const int hi = std::clamp(static_cast<int>(predicted) + halfWindow, lo, exemplarWidth - kTile);
+      const int radius = std::clamp(static_cast<int>(std::lround(2 * spreadOfLevel(qy))), 2, 12);
+      const int r0 = std::max(0, ty - radius), r1 = std::min(height, ty + kTile + radius);
+      cv::Mat1f tile;
+      cv::resize(lum(cv::Rect(tx, ty, kTile, kTile)), tile, {std::max(1, kTile / b.kx), std::max(1, kTile / b.ky)}, 0, 0,
+                 cv::INTER_AREA);
+      const int sc0 = lo / b.kx, sc1 = std::min(b.small.cols, (hi + kTile) / b.kx);
+      const int sr0 = r0 / b.ky, sr1 = std::min(b.small.rows, (r1 + b.ky - 1) / b.ky);
+      cv::Scalar mean, stddev;
+      cv::meanStdDev(tile, mean, stddev);
+      int sx = std::clamp(static_cast<int>(std::lround(predicted)), 0, exemplarWidth - kTile);
+      int sy = ty;
+      double gain = period > 0 ? kDetailGain : kDetailGain * kRandomDetailGain;
+      if (stddev[0] >= 0.75 && sr1 - sr0 >= tile.rows && sc1 - sc0 >= tile.cols) {
+        cv::Mat1f score;
+        cv::matchTemplate(b.small(cv::Range(sr0, sr1), cv::Range(sc0, sc1)), tile, score, cv::TM_CCOEFF_NORMED);
+        double best;
+        cv::Point at;
+        cv::minMaxLoc(score, nullptr, &best, nullptr, &at);
+        const int foundX = std::clamp((sc0 + at.x) * b.kx, 0, exemplarWidth - kTile);
+        if (period > 0) {
+          // Clear evidence moves the phase; faint evidence leaves the lattice's.
+          if (best > 0.6 && sc1 - sc0 - tile.cols >= 2) {
+            shift += foundX - predicted;
+            sx = foundX;
+            sy = std::clamp((sr0 + at.y) * b.ky, 0, height - kTile);
+          }
+        } else {
+          gain *= std::clamp((best - 0.3) / 0.4, 0.0, 1.0);
+          sx = foundX;
+          sy = std::clamp((sr0 + at.y) * b.ky, 0, height - kTile);
+        }
+      }
+      if (period > 0) {
+        for (int k = 0; k < 4 && !clean(sx); ++k) {  // whole periods away from odd columns
+          const int step = static_cast<int>(std::lround(period));
+          sx = sx + step <= exemplarWidth - kTile && clean(sx + step) ? sx + step
+               : sx - step >= 0                                      ? sx - step
+                                                                     : sx;
+        }
+      }
+      if (!clean(sx) || gain <= 0) continue;
+      sy = std::clamp(sy, 0, height - kTile);
+      const cv::Rect source(sx, sy, kTile, kTile);
+      // The match's contrast against the tile's: shading differs along a corridor.
+      cv::Scalar sourceMean, sourceStd;
+      cv::Mat1f sourceLum;
+      cv::cvtColor(b.color(source), sourceLum, cv::COLOR_BGR2GRAY);
+      cv::meanStdDev(sourceLum, sourceMean, sourceStd);
+      const double contrast = sourceStd[0] > 0.5 && stddev[0] >= 0.75 ? std::clamp(stddev[0] / sourceStd[0], 0.5, 1.5) : 1.0;
+      const float k = static_cast<float>(gain * contrast);
+      for (int y = 0; y < kTile; ++y) {
+        const cv::Vec3f* sharp = exemplar.ptr<cv::Vec3f>(sy + y) + sx;
+        const cv::Vec3f* blur = b.color.ptr<cv::Vec3f>(sy + y) + sx;
+        cv::Vec3f* d = detail.ptr<cv::Vec3f>(ty + y) + tx;
+        float* w = weight.ptr<float>(ty + y) + tx;
+        for (int x = 0; x < kTile; ++x) {
+          const float wx = window[x] * window[y];
+          d[x] += (sharp[x] - blur[x]) * (k * wx);
+          w[x] += wx;
+        }
+      }
+    }
+  }
+  int added = 0;
+  for (int y = 0; y < height; ++y) {
+    cv::Vec3f* t = texture.ptr<cv::Vec3f>(y);
+    const cv::Vec3f* d = detail.ptr<cv::Vec3f>(y);
+    const float* w = weight.ptr<float>(y);
+    for (int x = 0; x < width; ++x) {
+      if (w[x] > 1e-3f) {
+        t[x] += d[x] * (1.0f / std::max(w[x], 0.25f));
+        ++added;
+      }
+    }
+  }
+  stats.detailFraction = double(added) / (double(width) * height);
+}
+
+// Fills the texels the photo does not show from the shown ones in the same row.
+void fill(cv::Mat3f& texture, const cv::Mat1b& shown, double period, SynthesisStats& stats) {
+  const int width = texture.cols, height = texture.rows;
+  std::vector<int> first(height, -1), last(height, -1);
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* m = shown.ptr<uint8_t>(y);
+    for (int x = 0; x < width; ++x) {
+      if (m[x]) {
+        if (first[y] < 0) first[y] = x;
+        last[y] = x;
+      }
+    }
+  }
+  // Rows the photo does not show at all borrow the nearest row it shows.
+  std::vector<int> rowOf(height, -1);
+  for (int y = 0; y < height; ++y) {
+    for (int d = 0; d < height && rowOf[y] < 0; ++d) {
+      if (y - d >= 0 && first[y - d] >= 0) rowOf[y] = y - d;
+      else if (y + d < height && first[y + d] >= 0) rowOf[y] = y + d;
+    }
+  }
+  int filled = 0;
+  for (int y = 0; y < height; ++y) {
+    const int row = rowOf[y];
+    if (row < 0) return;  // the photo shows nothing of this surface
+    const int a = first[row], b = last[row], span = b - a + 1;
+    const cv::Vec3f* src = texture.ptr<cv::Vec3f>(row);
+    cv::Vec3f* dst = texture.ptr<cv::Vec3f>(y);
+    const uint8_t* m = shown.ptr<uint8_t>(y);
+    const uint8_t* srcShown = shown.ptr<uint8_t>(row);
+    for (int x = 0; x < width; ++x) {
+      if (m[x] && row == y) continue;
+      int sx;
+      if (period > 0 && span > period + 1) {
+        // Whole periods towards the shown span: the lattice continues.
+        const double n = x < a ? std::ceil((a - x) / period) : x > b ? -std::ceil((x - b) / period) : 0.0;
+        sx = static_cast<int>(std::lround(x + n * period));
+      } else {
+        // Mirrored into the shown span (no joins, no seam).
+        const int offset = x < a ? a - 1 - x : x > b ? x - b - 1 : x - a;
+        const int cycle = offset % (2 * span);
+        sx = x < a ? a + (cycle < span ? cycle : 2 * span - 1 - cycle) : b - (cycle < span ? cycle : 2 * span - 1 - cycle);
+      }
+      sx = std::clamp(sx, a, b);
+      if (!srcShown[sx]) sx = x < a ? a : b;
+      dst[x] = src[sx];
+      ++filled;
+    }
+  }
+  stats.filledFraction = double(filled) / (double(width) * height);
+}
+
+}  // namespace
+
+SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, cv::Size photoSize,
+                                 const SynthesisOptions& options) {
+  SynthesisStats stats;
+  if (texture.empty() || texture.type() != CV_8UC3) return stats;
+  const Grid grid = footprints(texture.size(), photoOf, photoSize);
+  const double least = leastSpread(grid);
+  const auto [x0, x1] = exemplarColumns(grid, texture.cols, least);
+  stats.exemplarColumns = x1 - x0;
+  if (x1 - x0 < kTile) return stats;
+  cv::Mat3f work;
+  texture.convertTo(work, CV_32FC3);
+  cv::Mat1f lum;
+  cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
+  const cv::Mat1b shown = coverage(texture.size(), photoOf, photoSize);
+  const double period = periodAlongX(lum(cv::Range::all(), cv::Range(x0, x1)), shown(cv::Range::all(), cv::Range(x0, x1)));
+  stats.periodPx = static_cast<int>(std::lround(period));
+  // Filled first, so that the exemplar's own gaps hold texture before it lends detail.
+  if (options.fill) fill(work, shown, period, stats);
+  if (options.detail) {
+    cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
+    addDetail(work, lum, grid, x0, x1, period, stats);
+  }
+  work.convertTo(texture, CV_8UC3);  // rounds and saturates
+  return stats;
+}
+
+}  // namespace pw::modeling
