@@ -35,12 +35,6 @@ int fail(const std::string& message) {
   return 1;
 }
 
-cv::Mat toBgr(const pw::engine::Image& image) {
-  cv::Mat rgba(image.height, image.width, CV_8UC4, const_cast<uint8_t*>(image.rgba.data())), bgr;
-  cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
-  return bgr;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -92,10 +86,9 @@ int main(int argc, char** argv) {
       }
       ViewScores row[kModelCount];
       for (int m = 0; m < kModelCount; ++m) {
-        if (auto s = (*renderer)->setScene(scenes[m]); !s) return fail(s.message());
-        auto frame = (*renderer)->renderToImage(view.camera, view.truth.cols, view.truth.rows);
-        if (!frame) return fail(frame.message());
-        const cv::Mat ours = toBgr(*frame);
+        std::string error;
+        const cv::Mat ours = pw::test::renderView(**renderer, scenes[m], view, error);
+        if (ours.empty()) return fail(error);
         row[m] = pw::test::scoreView(ours, view.truth);
         scores[m][kind].push_back(row[m]);
         if (!saveDir.empty()) {

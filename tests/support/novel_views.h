@@ -19,6 +19,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "engine/gpu/renderer.h"
 #include "engine/scene/camera.h"
 
 namespace pw::test {
@@ -110,6 +111,18 @@ inline ViewScores scoreView(const cv::Mat& ours, const cv::Mat& truth) {
   const double truthEnergy = meanAbsLaplacian(b);
   s.highFrequencyRatio = truthEnergy > 0 ? meanAbsLaplacian(a) / truthEnergy : 0.0;
   return s;
+}
+
+// `scene` drawn from the view's camera at the truth's size, BGR; empty on failure,
+// with `error` set.
+inline cv::Mat renderView(engine::Renderer& renderer, const engine::Scene& scene, const NovelView& view,
+                          std::string& error) {
+  if (auto s = renderer.setScene(scene); !s) return error = s.message(), cv::Mat();
+  auto frame = renderer.renderToImage(view.camera, view.truth.cols, view.truth.rows);
+  if (!frame) return error = frame.message(), cv::Mat();
+  cv::Mat rgba(frame->height, frame->width, CV_8UC4, frame->rgba.data()), bgr;
+  cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
+  return bgr;
 }
 
 }  // namespace pw::test
