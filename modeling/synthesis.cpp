@@ -40,9 +40,14 @@ struct Grid {
   const Cell& at(int cx, int cy) const { return cells[static_cast<size_t>(cy) * cols + cx]; }
 };
 
-bool insidePhoto(const glm::dvec2& p, cv::Size size) {
-  return p.x >= -0.5 && p.y >= -0.5 && p.x <= size.width - 0.5 && p.y <= size.height - 0.5;
+bool insidePhoto(const glm::dvec2& p, cv::Size size, double marginPx = 0) {
+  return p.x >= marginPx - 0.5 && p.y >= marginPx - 0.5 && p.x <= size.width - 0.5 - marginPx &&
+         p.y <= size.height - 0.5 - marginPx;
 }
+
+// The photo's outermost pixels reach the texture through a bicubic filter that sees
+// beyond the photo: texels within this of its border count as not shown.
+constexpr double kBorderPx = 2.0;
 
 Grid footprints(cv::Size textureSize, const PhotoOfTexel& photoOf, cv::Size photoSize) {
   Grid g;
@@ -75,7 +80,7 @@ cv::Mat1b coverage(cv::Size size, const PhotoOfTexel& photoOf, cv::Size photoSiz
   cv::Mat1b mask(size, uint8_t(0));
   const auto shows = [&](double x, double y) {
     const auto p = photoOf(x, y);
-    return p && insidePhoto(*p, photoSize);
+    return p && insidePhoto(*p, photoSize, kBorderPx);
   };
   for (int y0 = 0; y0 < size.height; y0 += kCell) {
     for (int x0 = 0; x0 < size.width; x0 += kCell) {
@@ -214,36 +219,50 @@ glm::dvec2 exemplarSpread(const Grid& g, int x0, int x1) {
   return {xs[xs.size() / 2], ys[ys.size() / 2]};
 }
 
-// Exemplar columns unlike the rest (a band, a door frame): no source of detail. Each
-// column's mean is compared with the median of the columns whole periods away (of all
-// columns when the surface does not repeat).
-std::vector<bool> oddColumns(const cv::Mat1f& exemplarLum, double period) {
-  cv::Mat1f means;
-  cv::reduce(exemplarLum, means, 0, cv::REDUCE_AVG);
-  const std::vector<float> v(means.begin(), means.end());
-  const int n = static_cast<int>(v.size());
+// Columns unlike the rest (a band, a door frame), from each column's mean: compared with
+// the median of the columns whole periods away (of all columns when the surface does not
+// repeat). They lend neither detail nor fill.
+std::vector<bool> oddColumns(const std::vector<float>& means, double period) {
+  const int n = static_cast<int>(means.size());
   const auto medianOf = [](std::vector<float> x) {
     std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
     return x[x.size() / 2];
   };
+  std::vector<bool> odd(n, false);
+  if (n == 0) return odd;
   std::vector<float> residual(n);
-  const float overall = n > 0 ? medianOf(v) : 0.0f;
   for (int i = 0; i < n; ++i) {
-    if (period <= 0) {
-      residual[i] = v[i] - overall;
+    if (period <= 0) {  // against the columns around it (the light changes along a corridor)
+      std::vector<float> around;
+      for (int j = std::max(0, i - 48); j < std::min(n, i + 49); ++j) {
+        if (std::abs(j - i) > 8 && means[j] > 0) around.push_back(means[j]);
+      }
+      residual[i] = around.empty() ? 0.0f : means[i] - medianOf(around);
       continue;
     }
     std::vector<float> same;
-    for (double x = std::fmod(i, period); x < n; x += period) same.push_back(v[std::min(n - 1, static_cast<int>(std::lround(x)))]);
-    residual[i] = v[i] - medianOf(same);
+    for (double x = std::fmod(i, period); x < n; x += period) same.push_back(means[std::min(n - 1, static_cast<int>(std::lround(x)))]);
+    residual[i] = means[i] - medianOf(same);
   }
-  std::vector<bool> odd(n, false);
-  if (n == 0) return odd;
   std::vector<float> dev;
   for (float r : residual) dev.push_back(std::abs(r));
   const float mad = std::max(1.0f, medianOf(dev));
   for (int i = 0; i < n; ++i) odd[i] = std::abs(residual[i]) > std::max(4 * mad, 12.0f);
   return odd;
+}
+
+// Each column's mean over the texels the photo shows (0 where it shows none).
+std::vector<float> columnMeans(const cv::Mat1f& lum, const cv::Mat1b& shown) {
+  std::vector<float> means(lum.cols, 0.0f);
+  for (int x = 0; x < lum.cols; ++x) {
+    double sum = 0;
+    int count = 0;
+    for (int y = 0; y < lum.rows; ++y) {
+      if (shown(y, x)) sum += lum(y, x), ++count;
+    }
+    means[x] = count ? static_cast<float>(sum / count) : 0.0f;
+  }
+  return means;
 }
 
 void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x0, int x1, double period,
@@ -254,7 +273,9 @@ void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x
   const glm::dvec2 own = exemplarSpread(grid, x0, x1);
   const cv::Mat3f exemplar = texture(cv::Range::all(), cv::Range(x0, x1)).clone();
   const cv::Mat1f exemplarLum = lum(cv::Range::all(), cv::Range(x0, x1));
-  const std::vector<bool> odd = oddColumns(exemplarLum, period);
+  cv::Mat1f means;
+  cv::reduce(exemplarLum, means, 0, cv::REDUCE_AVG);
+  const std::vector<bool> odd = oddColumns(std::vector<float>(means.begin(), means.end()), period);
   std::vector<int> oddBefore(exemplarWidth + 1, 0);  // prefix counts
   for (int i = 0; i < exemplarWidth; ++i) oddBefore[i + 1] = oddBefore[i] + odd[i];
   const auto clean = [&](int sx) { return oddBefore[sx + kTile] - oddBefore[sx] == 0; };
@@ -391,8 +412,14 @@ void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x
 }
 
 // Fills the texels the photo does not show from the shown ones in the same row.
-void fill(cv::Mat3f& texture, const cv::Mat1b& shown, double period, SynthesisStats& stats) {
+// `sharpEnd`: where the exemplar ends; a mirrored fill reflects no further (the part the
+// photo saw sharply, not the far end's blur).
+void fill(cv::Mat3f& texture, const cv::Mat1f& lum, const cv::Mat1b& shown, double period, int sharpEnd,
+          SynthesisStats& stats) {
   const int width = texture.cols, height = texture.rows;
+  std::vector<float> means = columnMeans(lum, shown);
+  std::vector<bool> odd = oddColumns(means, period);
+  for (int x = 0; x < width; ++x) odd[x] = odd[x] && means[x] > 0;
   std::vector<int> first(height, -1), last(height, -1);
   for (int y = 0; y < height; ++y) {
     const uint8_t* m = shown.ptr<uint8_t>(y);
@@ -412,10 +439,13 @@ void fill(cv::Mat3f& texture, const cv::Mat1b& shown, double period, SynthesisSt
     }
   }
   int filled = 0;
+  std::vector<int> good;  // the columns a mirrored fill reflects over, for `goodFor`
+  std::pair<int, int> goodFor{-1, -1};
   for (int y = 0; y < height; ++y) {
     const int row = rowOf[y];
     if (row < 0) return;  // the photo shows nothing of this surface
     const int a = first[row], b = last[row], span = b - a + 1;
+    const int mirrorSpan = std::max(1, std::min(b, std::max(a, sharpEnd - 1)) - a + 1);
     const cv::Vec3f* src = texture.ptr<cv::Vec3f>(row);
     cv::Vec3f* dst = texture.ptr<cv::Vec3f>(y);
     const uint8_t* m = shown.ptr<uint8_t>(y);
@@ -423,17 +453,31 @@ void fill(cv::Mat3f& texture, const cv::Mat1b& shown, double period, SynthesisSt
     for (int x = 0; x < width; ++x) {
       if (m[x] && row == y) continue;
       int sx;
-      if (period > 0 && span > period + 1) {
+      const bool periodic = period > 0 && span > period + 1;
+      if (periodic) {
         // Whole periods towards the shown span: the lattice continues.
         const double n = x < a ? std::ceil((a - x) / period) : x > b ? -std::ceil((x - b) / period) : 0.0;
-        sx = static_cast<int>(std::lround(x + n * period));
+        sx = std::clamp(static_cast<int>(std::lround(x + n * period)), a, b);
+        // Past odd columns by whole periods, further into the span.
+        const int step = static_cast<int>(std::lround(period)) * (x < a ? 1 : -1);
+        for (int k = 0; k < 16 && odd[sx] && sx + step >= a && sx + step <= b; ++k) sx += step;
       } else {
-        // Mirrored into the shown span (no joins, no seam).
-        const int offset = x < a ? a - 1 - x : x > b ? x - b - 1 : x - a;
-        const int cycle = offset % (2 * span);
-        sx = x < a ? a + (cycle < span ? cycle : 2 * span - 1 - cycle) : b - (cycle < span ? cycle : 2 * span - 1 - cycle);
+        // Mirrored into the shown span's columns that are not odd (no joins, no seam).
+        const bool near = x < a;
+        const int lo = near ? a : std::max(a, b - span + 1), hi = near ? a + mirrorSpan - 1 : b;
+        if (goodFor != std::make_pair(lo, hi)) {
+          good.clear();
+          for (int c = lo; c <= hi; ++c) {
+            if (!odd[c]) good.push_back(c);
+          }
+          if (good.empty()) good.push_back(near ? a : b);
+          goodFor = {lo, hi};
+        }
+        const int n = static_cast<int>(good.size());
+        const int offset = near ? a - 1 - x : x > b ? x - b - 1 : x - a;
+        const int cycle = offset % (2 * n), i = cycle < n ? cycle : 2 * n - 1 - cycle;
+        sx = near ? good[i] : good[n - 1 - i];
       }
-      sx = std::clamp(sx, a, b);
       if (!srcShown[sx]) sx = x < a ? a : b;
       dst[x] = src[sx];
       ++filled;
@@ -461,7 +505,7 @@ SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, 
   const double period = periodAlongX(lum(cv::Range::all(), cv::Range(x0, x1)), shown(cv::Range::all(), cv::Range(x0, x1)));
   stats.periodPx = static_cast<int>(std::lround(period));
   // Filled first, so that the exemplar's own gaps hold texture before it lends detail.
-  if (options.fill) fill(work, shown, period, stats);
+  if (options.fill) fill(work, lum, shown, period, x1, stats);
   if (options.detail) {
     cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
     addDetail(work, lum, grid, x0, x1, period, stats);
