@@ -180,7 +180,11 @@ void synthesize(CorridorModel& model, Surface surface, double extensionM, const 
   const double depthM = depthAlongS ? tex.rect.s1 - tex.rect.s0 : tex.rect.t1 - tex.rect.t0;
   const int extension =
       extensionM > 0 ? std::clamp(static_cast<int>(std::lround(extensionM * depthMajor.cols / depthM)), 1, kMaxExtensionColumns) : 0;
-  cv::Mat canvas(depthMajor.rows, depthMajor.cols + extension, CV_8UC3, cv::Scalar::all(0));
+  // The added columns start in the surface's mean colour (what stays where the photo
+  // shows nothing of it to fill them from).
+  const glm::vec3& mean = model.meanColor[static_cast<int>(surface)];
+  cv::Mat canvas(depthMajor.rows, depthMajor.cols + extension, CV_8UC3,
+                 cv::Scalar(255.0 * mean.b, 255.0 * mean.g, 255.0 * mean.r));
   depthMajor.copyTo(canvas(cv::Rect(extension, 0, depthMajor.cols, depthMajor.rows)));
   const glm::mat3 h = tex.sourceFromTexCoord;
   const int w = tex.image.width, ht = tex.image.height;

@@ -495,18 +495,19 @@ SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, 
   const Grid grid = footprints(texture.size(), photoOf, photoSize);
   const double least = leastSpread(grid);
   const auto [x0, x1] = exemplarColumns(grid, texture.cols, least);
-  stats.exemplarColumns = x1 - x0;
-  if (x1 - x0 < kTile) return stats;
+  const bool exemplar = x1 - x0 >= kTile;  // without one: no period, no detail, a mirrored fill
+  stats.exemplarColumns = exemplar ? x1 - x0 : 0;
   cv::Mat3f work;
   texture.convertTo(work, CV_32FC3);
   cv::Mat1f lum;
   cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
   const cv::Mat1b shown = coverage(texture.size(), photoOf, photoSize);
-  const double period = periodAlongX(lum(cv::Range::all(), cv::Range(x0, x1)), shown(cv::Range::all(), cv::Range(x0, x1)));
+  const double period =
+      exemplar ? periodAlongX(lum(cv::Range::all(), cv::Range(x0, x1)), shown(cv::Range::all(), cv::Range(x0, x1))) : 0.0;
   stats.periodPx = static_cast<int>(std::lround(period));
   // Filled first, so that the exemplar's own gaps hold texture before it lends detail.
-  if (options.fill) fill(work, lum, shown, period, x1, stats);
-  if (options.detail) {
+  if (options.fill) fill(work, lum, shown, period, exemplar ? x1 : texture.cols, stats);
+  if (options.detail && exemplar) {
     cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
     addDetail(work, lum, grid, x0, x1, period, stats);
   }

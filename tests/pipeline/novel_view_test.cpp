@@ -5,8 +5,8 @@
 //  - `build`'s model (what the photo did not see synthesized, the corridor closed
 //    behind the camera) is nowhere worse than `build --photo-only`'s by more than
 //    0.5 dB, and looking back it is better in every scene by at least 1.5 dB (the
-//    void behind the camera is gone), and each scene's back view holds its measured
-//    figure less 1 dB;
+//    void behind the camera is gone), each scene's back view holds its measured
+//    figure less 1 dB, and their median the 27 dB;
 //  - `build --detail` adds high-frequency energy: the median ratio at mid-corridor at
 //    least 0.4 (photo-only: 0.25), and no view more than 0.5 dB worse than photo-only.
 #include <gtest/gtest.h>
@@ -28,8 +28,8 @@ namespace {
 // Measured 2026-12-01 on lavapipe (bench/novel_view_bench): the back view's PSNR of
 // `build`'s model, dB.
 const std::map<std::string, double> kBackPsnrDb = {
-    {"corridor_a", 23.25}, {"corridor_b", 36.31}, {"corridor_c", 30.78}, {"corridor_d", 21.76},
-    {"corridor_e", 23.96}, {"corridor_f", 26.13}, {"corridor_g", 24.49}, {"corridor_h", 33.73},
+    {"corridor_a", 23.26}, {"corridor_b", 36.51}, {"corridor_c", 31.10}, {"corridor_d", 21.76},
+    {"corridor_e", 23.96}, {"corridor_f", 27.15}, {"corridor_g", 29.02}, {"corridor_h", 33.81},
 };
 
 double median(std::vector<double> v) {
@@ -43,7 +43,7 @@ TEST(NovelViews, SynthesisClosesTheCorridorAndNeverCostsAView) {
   options.validation = engine::RendererOptions::Validation::kOn;
   auto renderer = engine::Renderer::create(options);
   ASSERT_TRUE(renderer.ok()) << renderer.message();
-  std::vector<double> detailAhead, photoOnlyAhead;
+  std::vector<double> detailAhead, photoOnlyAhead, backPsnr;
   for (const std::string& name : groundtruth::groundTruthNames()) {
     SCOPED_TRACE(name);
     const auto shot = groundtruth::groundTruthShot(name);
@@ -73,11 +73,13 @@ TEST(NovelViews, SynthesisClosesTheCorridorAndNeverCostsAView) {
       if (kind == "back") {
         EXPECT_GE(scores[1].psnrDb, scores[0].psnrDb + 1.5) << "looking back, the closed corridor";
         EXPECT_GE(scores[1].psnrDb, kBackPsnrDb.at(name) - 1.0);
+        backPsnr.push_back(scores[1].psnrDb);
       }
       if (kind == "ahead") detailAhead.push_back(scores[2].highFrequencyRatio), photoOnlyAhead.push_back(scores[0].highFrequencyRatio);
     }
   }
   EXPECT_GE(median(detailAhead), 0.4) << "--detail: high-frequency energy at mid-corridor";
+  EXPECT_GE(median(backPsnr), 27.0) << "looking back, the issue's target";
   EXPECT_GT(median(detailAhead), median(photoOnlyAhead) + 0.1);
   EXPECT_EQ((*renderer)->validationMessageCount(), 0u);
 }
