@@ -414,7 +414,7 @@ void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x
 // Fills the texels the photo does not show from the shown ones in the same row.
 // `sharpEnd`: where the exemplar ends; a mirrored fill reflects no further (the part the
 // photo saw sharply, not the far end's blur).
-void fill(cv::Mat3f& texture, const cv::Mat1f& lum, const cv::Mat1b& shown, double period, int sharpEnd,
+void fill(cv::Mat3b& texture, const cv::Mat1f& lum, const cv::Mat1b& shown, double period, int sharpEnd,
           SynthesisStats& stats) {
   const int width = texture.cols, height = texture.rows;
   std::vector<float> means = columnMeans(lum, shown);
@@ -446,8 +446,8 @@ void fill(cv::Mat3f& texture, const cv::Mat1f& lum, const cv::Mat1b& shown, doub
     if (row < 0) return;  // the photo shows nothing of this surface
     const int a = first[row], b = last[row], span = b - a + 1;
     const int mirrorSpan = std::max(1, std::min(b, std::max(a, sharpEnd - 1)) - a + 1);
-    const cv::Vec3f* src = texture.ptr<cv::Vec3f>(row);
-    cv::Vec3f* dst = texture.ptr<cv::Vec3f>(y);
+    const cv::Vec3b* src = texture.ptr<cv::Vec3b>(row);
+    cv::Vec3b* dst = texture.ptr<cv::Vec3b>(y);
     const uint8_t* m = shown.ptr<uint8_t>(y);
     const uint8_t* srcShown = shown.ptr<uint8_t>(row);
     for (int x = 0; x < width; ++x) {
@@ -497,21 +497,24 @@ SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, 
   const auto [x0, x1] = exemplarColumns(grid, texture.cols, least);
   const bool exemplar = x1 - x0 >= kTile;  // without one: no period, no detail, a mirrored fill
   stats.exemplarColumns = exemplar ? x1 - x0 : 0;
-  cv::Mat3f work;
-  texture.convertTo(work, CV_32FC3);
+  cv::Mat3b pixels = texture;  // shares the caller's pixels: the fill copies in place
+  cv::Mat1b grey;
+  cv::cvtColor(pixels, grey, cv::COLOR_BGR2GRAY);
   cv::Mat1f lum;
-  cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
+  grey.convertTo(lum, CV_32F);
   const cv::Mat1b shown = coverage(texture.size(), photoOf, photoSize);
   const double period =
       exemplar ? periodAlongX(lum(cv::Range::all(), cv::Range(x0, x1)), shown(cv::Range::all(), cv::Range(x0, x1))) : 0.0;
   stats.periodPx = static_cast<int>(std::lround(period));
   // Filled first, so that the exemplar's own gaps hold texture before it lends detail.
-  if (options.fill) fill(work, lum, shown, period, exemplar ? x1 : texture.cols, stats);
+  if (options.fill) fill(pixels, lum, shown, period, exemplar ? x1 : texture.cols, stats);
   if (options.detail && exemplar) {
+    cv::Mat3f work;
+    pixels.convertTo(work, CV_32FC3);
     cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
     addDetail(work, lum, grid, x0, x1, period, stats);
+    work.convertTo(texture, CV_8UC3);  // rounds and saturates
   }
-  work.convertTo(texture, CV_8UC3);  // rounds and saturates
   return stats;
 }
 
