@@ -38,6 +38,12 @@ constexpr double kSureBottomSideCoverage = 0.5;
 constexpr double kSureBoundaryCoverage = 0.5;
 constexpr int kSureBoundaries = 3;
 constexpr double kRunOnCoverage = 0.5;  // of the stretch just inside a far corner
+// A focal length from a second vanishing point: the corridor's point at least this
+// share of the long side from the principal point along the second one's direction,
+// and the estimate settled to this share within kFocalIterations refits.
+constexpr double kMinSecondPointOffsetOfLongSide = 0.02;
+constexpr double kFocalSettledShare = 0.005;
+constexpr int kFocalIterations = 5;
 // Two fits whose far walls are within this (pixels, worst corner) agree.
 constexpr double kAgreementPx = 2.0;
 
@@ -68,6 +74,46 @@ bool allFinite(const std::array<CornerEstimate, 8>& corners) {
 Result<ManhattanFrame> frameWithFocal(const std::vector<LineSegment>& segments, double focalPx, glm::dvec2 pp,
                                       cv::Size size) {
   return estimateManhattanFrame(segments, PinholeCamera{focalPx, pp}, size);
+}
+
+// The focal length from the corridor's vanishing point and a second finite one
+// (focalFromOrthogonalPoints), with the frame found with it. The frame's labels
+// depend on the focal length it was found with, so the two are iterated to a fixed
+// point; nullopt (the default then) when no second point fixes it: none is finite,
+// the corridor's point lies too near the principal point along the second one's
+// direction (f^2 = D d is then the product of a large and a noisy number: a camera
+// turned by under a degree or so), the value is not a lens's, or it does not settle.
+std::optional<std::pair<double, ManhattanFrame>> focalFromSecondPoint(const std::vector<LineSegment>& segments,
+                                                                      ManhattanFrame frame, glm::dvec2 pp, cv::Size size) {
+  const double longSide = std::max(size.width, size.height), diagonal = std::hypot(size.width, size.height);
+  double previous = 0;
+  for (int iteration = 0; iteration < kFocalIterations; ++iteration) {
+    std::optional<double> f;
+    double bestOffset = 0;
+    for (int role : {1, 2}) {
+      VanishingPoint second = role == 1 ? frame.horizontal : frame.vertical;
+      // Far out and found on the sphere with a focal length that is only a guess: its
+      // position refitted in the image, where it does not depend on it.
+      std::vector<int> members;
+      for (size_t i = 0; i < frame.labels.size(); ++i)
+        if (frame.labels[i] == role) members.push_back(static_cast<int>(i));
+      if (second.isFinite() && members.size() >= 2) {
+        second.point = glm::normalize(homogeneous(refineFinitePoint(second.pixel(), segments, members)));
+      }
+      const std::optional<double> candidate = focalFromOrthogonalPoints(frame.corridor, second, pp, diagonal);
+      if (!candidate) continue;
+      const double offset =
+          std::abs(glm::dot(frame.corridor.pixel() - pp, glm::normalize(second.pixel() - pp)));
+      if (offset >= kMinSecondPointOffsetOfLongSide * longSide && offset > bestOffset) f = candidate, bestOffset = offset;
+    }
+    if (!f || !(*f > 0.3 * longSide && *f < 5.0 * longSide)) return std::nullopt;
+    auto refitted = frameWithFocal(segments, *f, pp, size);
+    if (!refitted) return std::nullopt;
+    frame = std::move(*refitted);
+    if (std::abs(*f - previous) <= kFocalSettledShare * *f) return std::pair{*f, std::move(frame)};
+    previous = *f;
+  }
+  return std::nullopt;
 }
 
 // What the far-wall searches share.
@@ -274,14 +320,10 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   auto frame = frameWithFocal(segments, d.focalPx, pp, size);
   if (!frame) return notFound(d, frame.message());
   if (!options.focalPx) {
-    std::optional<double> f = focalFromOrthogonalPoints(frame->corridor, frame->horizontal, pp, diagonal);
-    if (!f) f = focalFromOrthogonalPoints(frame->corridor, frame->vertical, pp, diagonal);
-    const double longSide = std::max(size.width, size.height);
-    if (f && *f > 0.3 * longSide && *f < 5.0 * longSide) {
-      d.focalPx = *f;
+    if (auto second = focalFromSecondPoint(segments, *frame, pp, size)) {
+      d.focalPx = second->first;
       d.focalSource = FocalSource::kVanishingPoints;
-      frame = frameWithFocal(segments, d.focalPx, pp, size);
-      if (!frame) return notFound(d, frame.message());
+      frame = std::move(second->second);
     } else {
       d.warnings.push_back("focal length not given and the photo has no second finite vanishing point: assumed " +
                            std::to_string(static_cast<int>(std::lround(d.focalPx))) +

@@ -106,5 +106,48 @@ TEST(DetectClutter, NoisyJpegScenesNeverConfidentlyWrong) {
   EXPECT_EQ(t.wrongConfident, 0);
 }
 
+// Issue 15 item 4, focal length withheld: from a second finite vanishing point where
+// the camera is turned (yaw or pitch: the horizontal or vertical point comes in from
+// infinity), else the default with its warning. Prints how often each happens.
+TEST(DetectClutter, FocalSourcesOnTheScenes) {
+  std::vector<std::string> names = groundtruth::groundTruthNames();
+  for (const std::string& n : groundtruth::clutterNames()) names.push_back(n);
+  std::printf("\nfocal length withheld: where it comes from\n%-11s %6s %6s %8s %8s  %s\n", "scene", "yaw", "pitch",
+              "focal", "error %", "source");
+  int fromPoints = 0, fromDefault = 0, nothing = 0;
+  for (const groundtruth::GroundTruth& g : [&] {
+         std::vector<groundtruth::GroundTruth> all;
+         for (const std::string& n : names) all.push_back(groundtruth::loadGroundTruth(n));
+         return all;
+       }()) {
+    const cv::Mat image = cv::imread(g.image.string(), cv::IMREAD_COLOR);
+    DetectOptions options;
+    options.principalPointPx = g.principalPointPx;
+    auto d = detectCorridor(image, options);
+    ASSERT_TRUE(d.ok()) << g.name;
+    if (!d->found) {
+      std::printf("%-11s %6.1f %6.1f %8s %8s  no corridor: %s\n", g.name.c_str(), g.yawDeg, g.pitchDeg, "-", "-",
+                  d->notFoundReason.c_str());
+      ++nothing;
+      continue;
+    }
+    const double errorPct = 100 * (d->focalPx - g.focalPx) / g.focalPx;
+    std::printf("%-11s %6.1f %6.1f %8.1f %+8.2f  %s\n", g.name.c_str(), g.yawDeg, g.pitchDeg, d->focalPx, errorPct,
+                focalSourceName(d->focalSource));
+    const bool turned = std::abs(g.yawDeg) >= 3 || std::abs(g.pitchDeg) >= 3;
+    if (turned) {
+      EXPECT_EQ(d->focalSource, FocalSource::kVanishingPoints) << g.name;
+      EXPECT_LE(std::abs(errorPct), 1.0) << g.name;  // measured: 0.5% at most
+    } else {
+      // Looking straight down the corridor there is no second finite point: never one made up.
+      EXPECT_EQ(d->focalSource, FocalSource::kDefault) << g.name;
+      EXPECT_FALSE(d->warnings.empty()) << g.name;
+    }
+    (d->focalSource == FocalSource::kVanishingPoints ? fromPoints : fromDefault) += 1;
+  }
+  std::printf("of %zu scenes: %d from a second vanishing point, %d the default, %d no corridor\n", names.size(),
+              fromPoints, fromDefault, nothing);
+}
+
 }  // namespace
 }  // namespace pw::metrology::detect
