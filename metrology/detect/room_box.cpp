@@ -114,57 +114,65 @@ Result<Rectified> rectify(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 h
 }
 
 // Every ray from the origin (the corridor's vanishing point), one per kRayStepDeg:
-// whether an edge runs along it at each whole radius, as prefix sums. A boundary
+// whether an edge runs along it at each whole radius, and which side is brighter, as
+// prefix sums. A boundary
 // starts at a far-wall corner: edges beyond it, none over the far wall before it.
 class RayTable {
  public:
   explicit RayTable(const Rectified& r) : origin_(r.origin) {
     const int count = static_cast<int>(std::lround(360.0 / kRayStepDeg));
-    prefix_.resize(count);
+    for (auto* prefix : {&rising_, &falling_}) prefix->resize(count);
     for (int a = 0; a < count; ++a) {
       const double angle = a * kRayStepDeg * kPi / 180.0;
       const glm::dvec2 d(std::cos(angle), std::sin(angle)), n(-d.y, d.x);
-      std::vector<int>& p = prefix_[a];
-      p.push_back(0);
+      std::vector<int>& rising = rising_[a];
+      std::vector<int>& falling = falling_[a];
+      rising.push_back(0), falling.push_back(0);
       for (double t = 0;; t += 1.0) {
         const glm::dvec2 q = origin_ + t * d;
         if (t > 3 && !r.inside(q)) break;
         if (t > 4 * (r.valid.cols + r.valid.rows)) break;
-        bool edge = false;
-        for (int k = -1; k <= 1 && !edge; ++k) {
+        double strongest = 0;  // the gradient across the ray, signed, strongest within a pixel
+        for (int k = -1; k <= 1; ++k) {
           const glm::dvec2 e = q + static_cast<double>(k) * n;
           const int x = static_cast<int>(e.x + 0.5), y = static_cast<int>(e.y + 0.5);
           if (x < 0 || y < 0 || x >= r.gradX.cols || y >= r.gradX.rows) continue;
-          edge = std::abs(r.gradX.at<float>(y, x) * n.x + r.gradY.at<float>(y, x) * n.y) > kEdgeGreyPerPx;
+          const double across = r.gradX.at<float>(y, x) * n.x + r.gradY.at<float>(y, x) * n.y;
+          if (std::abs(across) > std::abs(strongest)) strongest = across;
         }
-        p.push_back(p.back() + edge);
+        rising.push_back(rising.back() + (strongest > kEdgeGreyPerPx));
+        falling.push_back(falling.back() + (strongest < -kEdgeGreyPerPx));
       }
     }
   }
   int angleIndex(glm::dvec2 p) const {
     const double angle = wrapAngle(std::atan2(p.y - origin_.y, p.x - origin_.x)) * 180.0 / kPi;
-    return static_cast<int>(std::lround(angle / kRayStepDeg)) % static_cast<int>(prefix_.size());
+    return static_cast<int>(std::lround(angle / kRayStepDeg)) % angles();
   }
   // Edge share beyond `radius` (to the photo's border) and over its inner half.
   double outside(int a, double radius) const { return coverage(a, radius + 2, 1e9); }
   double inside(int a, double radius) const { return coverage(a, radius - std::max(10.0, 0.2 * radius), radius - 2); }
   double start(int a, double radius) const { return outside(a, radius) - inside(a, radius); }
-  int length(int a) const { return static_cast<int>(prefix_[a].size()) - 1; }
-  int angles() const { return static_cast<int>(prefix_.size()); }
+  int length(int a) const { return static_cast<int>(rising_[a].size()) - 1; }
+  int angles() const { return static_cast<int>(rising_.size()); }
   glm::dvec2 at(int a, double radius) const {
     const double angle = a * kRayStepDeg * kPi / 180.0;
     return origin_ + radius * glm::dvec2(std::cos(angle), std::sin(angle));
   }
 
  private:
+  // A boundary is one edge between two surfaces: the same side brighter along it. A
+  // texture's edges (wood grain, tiles, noise) along the ray flip from one to the
+  // other, so only the commoner sign counts.
   double coverage(int a, double from, double to) const {
-    const std::vector<int>& p = prefix_[a];
-    const int n = static_cast<int>(p.size()) - 1;
+    const int n = length(a);
     const int i = std::clamp(static_cast<int>(from), 0, n), j = std::clamp(static_cast<int>(to), 0, n);
-    return j - i >= 8 ? static_cast<double>(p[j] - p[i]) / (j - i) : 0.0;
+    if (j - i < 8) return 0.0;
+    const int rising = rising_[a][j] - rising_[a][i], falling = falling_[a][j] - falling_[a][i];
+    return (std::max(rising, falling) + 0.5 * std::min(rising, falling)) / (j - i);
   }
   glm::dvec2 origin_;
-  std::vector<std::vector<int>> prefix_;
+  std::vector<std::vector<int>> rising_, falling_;  // per ray, prefix counts of edges by sign
 };
 
 // The likeliest far-wall corners in one quadrant: on each ray, the radius where a

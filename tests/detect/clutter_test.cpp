@@ -97,12 +97,9 @@ TEST(DetectClutter, RenderedScenesMeetIssueTargets) {
   EXPECT_EQ(t.wrongConfident, 0);
 }
 
-// Never a confident wrong answer; the right corridor in 7 of 9 (measured: the issue
-// asks 8; clutter_1, whose far-wall door has its corners on the boundaries' rays,
-// and clutter_8, whose far wall's foot is hidden, come out wrong but unsure, exit 3).
-TEST(DetectClutter, NoisyJpegScenesNeverConfidentlyWrong) {
+TEST(DetectClutter, NoisyJpegScenesMeetIssueTargets) {
   const Tally t = runVariant("cluttered corridors, focal length given, noise sigma 3 + JPEG quality 70", true);
-  EXPECT_GE(t.right, 7);
+  EXPECT_GE(t.right, 8);
   EXPECT_EQ(t.wrongConfident, 0);
 }
 
