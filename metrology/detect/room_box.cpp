@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -211,7 +213,14 @@ std::vector<glm::dvec2> cornerCandidates(const RayTable& rays, double fromDeg, d
   return out;
 }
 
-// The strongest `count` positions of a weight profile, at least kMinSideGapPx apart.
+// Adds position i to `out` unless one there is within kMinSideGapPx of it.
+void addApart(std::vector<int>& out, int i) {
+  for (int j : out)
+    if (std::abs(i - j) < kMinSideGapPx) return;
+  out.push_back(i);
+}
+
+// The strongest `count` positions of a weight profile in [from, to), kMinSideGapPx apart.
 std::vector<int> strongest(const std::vector<double>& weight, int from, int to, int count) {
   std::vector<int> order;
   for (int i = std::max(0, from); i < std::min<int>(to, static_cast<int>(weight.size())); ++i)
@@ -220,28 +229,40 @@ std::vector<int> strongest(const std::vector<double>& weight, int from, int to, 
   std::vector<int> out;
   for (int i : order) {
     if (static_cast<int>(out.size()) >= count) break;
-    bool apart = true;
-    for (int j : out) apart &= std::abs(i - j) >= kMinSideGapPx;
-    if (apart) out.push_back(i);
+    addApart(out, i);
   }
   return out;
 }
 
-}  // namespace
+// Each position moves to the strongest of the profile within kSnapPx of it (a
+// corner's ray start is found to a few pixels); the position itself is kept too.
+std::vector<int> snapped(const std::vector<int>& in, const std::vector<double>& profile) {
+  std::vector<int> out;
+  for (int i : in) {
+    int best = i;
+    for (int k = std::max(0, i - kSnapPx); k <= std::min<int>(i + kSnapPx, static_cast<int>(profile.size()) - 1); ++k)
+      if (profile[k] > profile[best]) best = k;
+    if (std::find(out.begin(), out.end(), best) == out.end()) out.push_back(best);
+    if (best != i && std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+  }
+  return out;
+}
 
-Result<RoomBox> fitRoomBox(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 horizontal, glm::dvec3 vertical,
-                           const std::vector<LineSegment>& segments, const std::vector<int>& labels) {
-  auto rect = rectify(image, vp, horizontal, vertical);
-  if (!rect) return makeError(rect.message());
-  const Rectified& r = *rect;
+// Candidate positions of the far wall's sides on the rectified photo: columns for
+// the left and right sides, rows for the top and bottom.
+struct SideCandidates {
+  std::vector<int> lefts, rights, tops, bottoms;
+};
+
+// Three sources for each side, and the corners' ray starts. Segments towards the
+// horizontal and vertical points are the sides themselves (their length per column
+// or row); segments towards the corridor's point (wall joints, floor tiles, the
+// boundaries) start at the far wall's perimeter, so their inner ends mark its sides
+// too; and the edge profile of bands beside the vanishing point at a few reaches.
+SideCandidates candidateSides(const Rectified& r, const RayTable& rays, const WorkingImage& image,
+                              const std::vector<LineSegment>& segments, const std::vector<int>& labels) {
   const int ox = static_cast<int>(std::lround(r.origin.x)), oy = static_cast<int>(std::lround(r.origin.y));
   const cv::Matx33d toRect = r.toImage.inv();
-
-  // Candidate sides: segment support (length per column or row), and the edge
-  // profile of bands beside the vanishing point at a few heights.
-  // Segments towards the horizontal and vertical points are the sides themselves;
-  // segments towards the corridor's point (wall joints, floor tiles, the boundaries)
-  // start at the far wall's perimeter, so their inner ends mark its sides too.
   std::vector<double> columnWeight(r.valid.cols, 0.0), rowWeight(r.valid.rows, 0.0);
   std::vector<double> columnStarts(r.valid.cols, 0.0), rowStarts(r.valid.rows, 0.0);
   const auto add = [](std::vector<double>& profile, double at, double weight) {
@@ -278,84 +299,54 @@ Result<RoomBox> fitRoomBox(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 
       rowProfile[y] = std::max({rowProfile[y], r.rowCoverage(y, ox - reach, ox - 2), r.rowCoverage(y, ox + 2, ox + reach)});
     }
   }
-  const auto candidates = [&](const std::vector<double>& weight, const std::vector<double>& starts,
-                              const std::vector<double>& profile, int from, int to) {
-    std::vector<int> out;
-    for (const std::vector<double>* source : {&weight, &starts, &profile}) {
-      for (int i : strongest(*source, from, to, kCandidatesPerSource)) {
-        bool apart = true;
-        for (int j : out) apart &= std::abs(i - j) >= kMinSideGapPx;
-        if (apart) out.push_back(i);
-      }
-    }
-    return out;
-  };
   // Quadrants on screen (y down): top-left from 180 to 270 degrees, and so on.
-  const RayTable rays(r);
   const std::vector<glm::dvec2> topLeft = cornerCandidates(rays, 181, 269), topRight = cornerCandidates(rays, 271, 359);
   const std::vector<glm::dvec2> bottomLeft = cornerCandidates(rays, 91, 179), bottomRight = cornerCandidates(rays, 1, 89);
-  const auto withCorners = [](std::vector<int> out, const std::vector<glm::dvec2>& a, const std::vector<glm::dvec2>& b,
-                              bool x) {
-    for (const std::vector<glm::dvec2>* corners : {&a, &b}) {
-      for (glm::dvec2 c : *corners) {
-        const int i = static_cast<int>(std::lround(x ? c.x : c.y));
-        bool apart = true;
-        for (int j : out) apart &= std::abs(i - j) >= kMinSideGapPx;
-        if (apart) out.push_back(i);
-      }
-    }
-    return out;
-  };
-  // A corner's ray start is found to a few pixels: each candidate moves to the
-  // strongest side within kSnapPx of it.
-  const auto snapped = [](std::vector<int> in, const std::vector<double>& profile) {
+  const auto side = [&](bool column, int from, int to, const std::vector<glm::dvec2>& cornersA,
+                        const std::vector<glm::dvec2>& cornersB) {
     std::vector<int> out;
-    for (int i : in) {
-      int best = i;
-      for (int k = std::max(0, i - kSnapPx); k <= std::min<int>(i + kSnapPx, static_cast<int>(profile.size()) - 1); ++k)
-        if (profile[k] > profile[best]) best = k;
-      if (std::find(out.begin(), out.end(), best) == out.end()) out.push_back(best);
-      if (best != i && std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+    for (const std::vector<double>* source : column ? std::array{&columnWeight, &columnStarts, &columnProfile}
+                                                    : std::array{&rowWeight, &rowStarts, &rowProfile}) {
+      for (int i : strongest(*source, from, to, kCandidatesPerSource)) addApart(out, i);
     }
-    return out;
+    for (const std::vector<glm::dvec2>* corners : {&cornersA, &cornersB}) {
+      for (glm::dvec2 c : *corners) addApart(out, static_cast<int>(std::lround(column ? c.x : c.y)));
+    }
+    return snapped(out, column ? columnProfile : rowProfile);
   };
-  const std::vector<int> lefts0 =
-      withCorners(candidates(columnWeight, columnStarts, columnProfile, 0, ox - 3), topLeft, bottomLeft, true);
-  const std::vector<int> rights0 =
-      withCorners(candidates(columnWeight, columnStarts, columnProfile, ox + 4, r.valid.cols), topRight, bottomRight, true);
-  const std::vector<int> tops0 = withCorners(candidates(rowWeight, rowStarts, rowProfile, 0, oy - 3), topLeft, topRight, false);
-  const std::vector<int> bottoms0 =
-      withCorners(candidates(rowWeight, rowStarts, rowProfile, oy + 4, r.valid.rows), bottomLeft, bottomRight, false);
-  const std::vector<int> lefts = snapped(lefts0, columnProfile), rights = snapped(rights0, columnProfile);
-  const std::vector<int> tops = snapped(tops0, rowProfile), bottoms = snapped(bottoms0, rowProfile);
-  if (lefts.empty() || rights.empty() || tops.empty() || bottoms.empty()) {
-    return makeError("no far wall: no rectangle of edges around the vanishing point");
-  }
+  return {side(true, 0, ox - 3, topLeft, bottomLeft), side(true, ox + 4, r.valid.cols, topRight, bottomRight),
+          side(false, 0, oy - 3, topLeft, topRight), side(false, oy + 4, r.valid.rows, bottomLeft, bottomRight)};
+}
 
-  // The boundary through a corner: (outside, inside) edge shares of its ray.
-  // A corner found to the pixel fixes its ray's angle only to 1/radius: the best ray
-  // within a pixel and a half of it.
-  const auto ray = [&](int x, int y) {
-    const glm::dvec2 c(x, y);
-    const int a0 = rays.angleIndex(c);
-    const double radius = glm::length(c - r.origin);
-    const int reach = std::min(15, static_cast<int>(std::ceil(1.5 / std::max(radius, 1.0) * 180 / kPi / kRayStepDeg)));
-    std::pair<double, double> best{0, 0};
-    for (int k = -reach; k <= reach; ++k) {
-      const int a = (a0 + k + rays.angles()) % rays.angles();
-      const double out = rays.outside(a, radius), in = rays.inside(a, radius);
-      if (out - in > best.first - best.second) best = {out, in};
-    }
-    return best;
-  };
-  RoomBox best;
-  best.score = -1e9;
-  bool any = false;
-  using RayStart = std::pair<double, double>;  // outside, inside
-  const auto consider = [&](int x0, int x1, int y0, int y1, const std::array<RayStart, 4>& boundary) {
+// The boundary through a corner (rectified pixels): the (outside, inside) edge
+// shares of its ray. A corner found to the pixel fixes the ray's angle only to
+// 1/radius: the ray within a pixel and a half of it that starts most clearly there.
+using RayStart = std::pair<double, double>;
+RayStart boundaryThrough(const Rectified& r, const RayTable& rays, int x, int y) {
+  const glm::dvec2 c(x, y);
+  const int a0 = rays.angleIndex(c);
+  const double radius = glm::length(c - r.origin);
+  const int reach = std::min(15, static_cast<int>(std::ceil(1.5 / std::max(radius, 1.0) * 180 / kPi / kRayStepDeg)));
+  RayStart best{0, 0};
+  for (int k = -reach; k <= reach; ++k) {
+    const int a = (a0 + k + rays.angles()) % rays.angles();
+    const double out = rays.outside(a, radius), in = rays.inside(a, radius);
+    if (out - in > best.first - best.second) best = {out, in};
+  }
+  return best;
+}
+
+// The best box of the candidates. Its score: the four sides' edge shares, and more,
+// the four boundaries' starts at its corners, the weakest counted again.
+class BoxSearch {
+ public:
+  BoxSearch(const Rectified& r, const RayTable& rays) : r_(r), rays_(rays) { best_.score = -1e9; }
+
+  // Boundaries: floor-left (bottom-left corner), floor-right, ceiling-left, ceiling-right.
+  void consider(int x0, int x1, int y0, int y1, const std::array<RayStart, 4>& boundary) {
     const int xm = static_cast<int>(0.1 * (x1 - x0)), ym = static_cast<int>(0.1 * (y1 - y0));
-    const std::array<double, 4> side = {r.rowCoverage(y0, x0 + xm, x1 - xm), r.rowCoverage(y1, x0 + xm, x1 - xm),
-                                        r.columnCoverage(x0, y0 + ym, y1 - ym), r.columnCoverage(x1, y0 + ym, y1 - ym)};
+    const std::array<double, 4> side = {r_.rowCoverage(y0, x0 + xm, x1 - xm), r_.rowCoverage(y1, x0 + xm, x1 - xm),
+                                        r_.columnCoverage(x0, y0 + ym, y1 - ym), r_.columnCoverage(x1, y0 + ym, y1 - ym)};
     if (side[0] < kMinTopSideCoverage || side[1] < kMinBottomSideCoverage || side[2] < kMinTopSideCoverage ||
         side[3] < kMinTopSideCoverage) {
       return;
@@ -367,62 +358,92 @@ Result<RoomBox> fitRoomBox(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 
     double starts = 0, weakest = 1;
     for (auto [out, in] : boundary) starts += out - 0.5 * in, weakest = std::min(weakest, out - 0.5 * in);
     const double score = (side[0] + side[1] + side[2] + side[3]) / 8 + starts / 4 + weakest / 2;
-    if (score <= best.score) return;
-    any = true;
-    best.score = score;
-    best.sideCoverage = side;
-    for (int b = 0; b < 4; ++b) best.rayOutside[b] = boundary[b].first, best.rayInside[b] = boundary[b].second;
+    if (score <= best_.score) return;
+    found_ = true;
+    best_.score = score;
+    best_.sideCoverage = side;
+    for (int b = 0; b < 4; ++b) best_.rayOutside[b] = boundary[b].first, best_.rayInside[b] = boundary[b].second;
     const std::array<glm::dvec2, 4> corners = {glm::dvec2(x0, y0), glm::dvec2(x1, y0), glm::dvec2(x0, y1),
                                                glm::dvec2(x1, y1)};
-    for (int k = 0; k < 4; ++k) best.corners[k] = apply(r.toImage, corners[k]);
-  };
-  // The far wall's top and upper sides stand above most clutter; its foot may be
-  // hidden but for a few stretches, or found only by where the floor's boundaries
-  // run to: for the upper boxes that score best, every row is tried as the foot.
-  struct Upper {
-    int x0, x1, y0;
-    double score;
-  };
-  std::vector<Upper> uppers;
-  // Each corner's boundary once: [side candidate][row candidate].
-  const auto table = [&](const std::vector<int>& xs, const std::vector<int>& ys) {
-    std::vector<std::vector<RayStart>> t(xs.size(), std::vector<RayStart>(ys.size()));
-    for (size_t i = 0; i < xs.size(); ++i)
-      for (size_t j = 0; j < ys.size(); ++j) t[i][j] = ray(xs[i], ys[j]);
-    return t;
-  };
-  const auto floorLeft = table(lefts, bottoms), floorRight = table(rights, bottoms);
-  const auto ceilingLeft = table(lefts, tops), ceilingRight = table(rights, tops);
-  for (size_t il = 0; il < lefts.size(); ++il) {
-    for (size_t ir = 0; ir < rights.size(); ++ir) {
-      const int x0 = lefts[il], x1 = rights[ir];
-      const int xm = static_cast<int>(0.1 * (x1 - x0));
-      for (size_t it = 0; it < tops.size(); ++it) {
-        const int y0 = tops[it];
-        const double top = r.rowCoverage(y0, x0 + xm, x1 - xm);
-        if (top < kMinTopSideCoverage) continue;
-        const int upperEnd = std::max(oy - 2, y0 + 10);
-        const double left = r.columnCoverage(x0, y0 + 2, upperEnd), right = r.columnCoverage(x1, y0 + 2, upperEnd);
-        const auto [leftOut, leftIn] = ceilingLeft[il][it];
-        const auto [rightOut, rightIn] = ceilingRight[ir][it];
-        uppers.push_back({x0, x1, y0, (top + left + right) / 3 + (leftOut - 0.5 * leftIn + rightOut - 0.5 * rightIn) / 2});
-        for (size_t ib = 0; ib < bottoms.size(); ++ib) {
-          // Boundaries: floor-left (bottom-left corner), floor-right, ceiling-left, ceiling-right.
-          consider(x0, x1, y0, bottoms[ib], {floorLeft[il][ib], floorRight[ir][ib], ceilingLeft[il][it], ceilingRight[ir][it]});
+    for (int k = 0; k < 4; ++k) best_.corners[k] = apply(r_.toImage, corners[k]);
+  }
+
+  // Every combination of the candidates; then, for the upper boxes (top and the
+  // sides' upper halves, the ceiling's boundaries) that score best, every row as the
+  // foot: the far wall's top and upper sides stand above most clutter, its foot may
+  // be hidden but for a few stretches, or found only by where the floor's boundaries
+  // run to.
+  std::optional<RoomBox> search(const SideCandidates& c) {
+    const int oy = static_cast<int>(std::lround(r_.origin.y));
+    // Each corner's boundary once: [side candidate][row candidate].
+    const auto table = [&](const std::vector<int>& xs, const std::vector<int>& ys) {
+      std::vector<std::vector<RayStart>> t(xs.size(), std::vector<RayStart>(ys.size()));
+      for (size_t i = 0; i < xs.size(); ++i)
+        for (size_t j = 0; j < ys.size(); ++j) t[i][j] = boundaryThrough(r_, rays_, xs[i], ys[j]);
+      return t;
+    };
+    const auto floorLeft = table(c.lefts, c.bottoms), floorRight = table(c.rights, c.bottoms);
+    const auto ceilingLeft = table(c.lefts, c.tops), ceilingRight = table(c.rights, c.tops);
+    struct Upper {
+      int x0, x1, y0;
+      double score;
+    };
+    std::vector<Upper> uppers;
+    for (size_t il = 0; il < c.lefts.size(); ++il) {
+      for (size_t ir = 0; ir < c.rights.size(); ++ir) {
+        const int x0 = c.lefts[il], x1 = c.rights[ir];
+        const int xm = static_cast<int>(0.1 * (x1 - x0));
+        for (size_t it = 0; it < c.tops.size(); ++it) {
+          const int y0 = c.tops[it];
+          const double top = r_.rowCoverage(y0, x0 + xm, x1 - xm);
+          if (top < kMinTopSideCoverage) continue;
+          const int upperEnd = std::max(oy - 2, y0 + 10);
+          const double left = r_.columnCoverage(x0, y0 + 2, upperEnd), right = r_.columnCoverage(x1, y0 + 2, upperEnd);
+          const auto [leftOut, leftIn] = ceilingLeft[il][it];
+          const auto [rightOut, rightIn] = ceilingRight[ir][it];
+          uppers.push_back({x0, x1, y0, (top + left + right) / 3 + (leftOut - 0.5 * leftIn + rightOut - 0.5 * rightIn) / 2});
+          for (size_t ib = 0; ib < c.bottoms.size(); ++ib) {
+            consider(x0, x1, y0, c.bottoms[ib],
+                     {floorLeft[il][ib], floorRight[ir][ib], ceilingLeft[il][it], ceilingRight[ir][it]});
+          }
         }
       }
     }
-  }
-  std::sort(uppers.begin(), uppers.end(), [](const Upper& a, const Upper& b) { return a.score > b.score; });
-  for (size_t i = 0; i < uppers.size() && i < kUpperBoxes; ++i) {
-    const Upper& u = uppers[i];
-    const RayStart ceilingLeftRay = ray(u.x0, u.y0), ceilingRightRay = ray(u.x1, u.y0);
-    for (int y1 = oy + 4; y1 < r.valid.rows; ++y1) {
-      consider(u.x0, u.x1, u.y0, y1, {ray(u.x0, y1), ray(u.x1, y1), ceilingLeftRay, ceilingRightRay});
+    std::sort(uppers.begin(), uppers.end(), [](const Upper& a, const Upper& b) { return a.score > b.score; });
+    for (size_t i = 0; i < uppers.size() && i < kUpperBoxes; ++i) {
+      const Upper& u = uppers[i];
+      const RayStart ceilingLeftRay = boundaryThrough(r_, rays_, u.x0, u.y0);
+      const RayStart ceilingRightRay = boundaryThrough(r_, rays_, u.x1, u.y0);
+      for (int y1 = oy + 4; y1 < r_.valid.rows; ++y1) {
+        consider(u.x0, u.x1, u.y0, y1,
+                 {boundaryThrough(r_, rays_, u.x0, y1), boundaryThrough(r_, rays_, u.x1, y1), ceilingLeftRay, ceilingRightRay});
+      }
     }
+    if (!found_) return std::nullopt;
+    return best_;
   }
-  if (!any) return makeError("no far wall: no rectangle of edges around the vanishing point");
-  return best;
+
+ private:
+  const Rectified& r_;
+  const RayTable& rays_;
+  RoomBox best_;
+  bool found_ = false;
+};
+
+}  // namespace
+
+Result<RoomBox> fitRoomBox(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 horizontal, glm::dvec3 vertical,
+                           const std::vector<LineSegment>& segments, const std::vector<int>& labels) {
+  auto rect = rectify(image, vp, horizontal, vertical);
+  if (!rect) return makeError(rect.message());
+  const RayTable rays(*rect);
+  const SideCandidates sides = candidateSides(*rect, rays, image, segments, labels);
+  if (sides.lefts.empty() || sides.rights.empty() || sides.tops.empty() || sides.bottoms.empty()) {
+    return makeError("no far wall: no rectangle of edges around the vanishing point");
+  }
+  std::optional<RoomBox> best = BoxSearch(*rect, rays).search(sides);
+  if (!best) return makeError("no far wall: no rectangle of edges around the vanishing point");
+  return *best;
 }
 
 }  // namespace pw::metrology::detect
