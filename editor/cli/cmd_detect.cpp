@@ -41,8 +41,10 @@ constexpr const char* kUsage =
     "                          the photo even when a band or frame marks a cross-section\n"
     "  --overlay OUT.png       also draw what was found on the photo (corners ringed by\n"
     "                          confidence: green >= 0.7, amber >= 0.4, red below)\n\n"
-    "Exit status: 0 written; 1 bad input (one line on stderr); 2 no corridor found in\n"
-    "the photo (nothing is written).\n";
+    "Exit status: 0 written, and detect is sure of it; 3 written, but unsure: a best\n"
+    "guess for a person to check in the editor (a warning line on stderr says why);\n"
+    "1 bad input (one line on stderr); 2 no corridor found in the photo (nothing is\n"
+    "written).\n";
 
 Result<glm::dvec2> parsePoint(const std::string& text, const char* option) {
   const size_t comma = text.find(',');
@@ -78,6 +80,8 @@ json detectionJson(const CorridorDetection& d) {
   }
   j["corners"] = corners;
   j["warnings"] = d.warnings;
+  j["confident"] = d.confident;
+  j["doubts"] = d.doubts;
   return j;
 }
 
@@ -184,6 +188,13 @@ int runDetect(Args& args) {
   if (!cameraHeightM) {
     std::fprintf(stderr, "note: no --camera-height: add camera_height_m (or a reference) to %s before measure\n",
                  output->c_str());
+  }
+  if (!detection->confident) {
+    std::string why;
+    for (const std::string& doubt : detection->doubts) why += (why.empty() ? "" : "; ") + doubt;
+    std::fprintf(stderr, "warning: unsure of this corridor, check it in the editor (photowalk edit %s): %s\n",
+                 output->c_str(), why.c_str());
+    return kExitUnsure;
   }
   return kExitOk;
 }

@@ -15,6 +15,7 @@ namespace pw::editor {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;   // bad input, failed work: a one-line "error: ..." was printed
 inline constexpr int kExitNotFound = 2;  // the command ran but found nothing (detect: no corridor)
+inline constexpr int kExitUnsure = 3;     // written, but a person should check it (detect: an unsure best guess)
 
 // Command-line arguments of one subcommand. Options are looked up by name (and
 // alias); what is left, not starting with '-', are positionals. finish() reports

@@ -147,6 +147,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.notes_.push_back("corners detected automatically (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) +
                          "): check each one, the lowest first");
     for (const std::string& warning : detection->warnings) doc.notes_.push_back("detection: " + warning);
+    for (const std::string& doubt : detection->doubts) doc.notes_.push_back("detection unsure: " + doubt);
   } else {
     const std::string reason = detection ? detection->notFoundReason : detection.message();
     const int longSide = std::max(shot.imageWidth, shot.imageHeight);

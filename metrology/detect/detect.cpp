@@ -8,6 +8,7 @@
 #include "metrology/detect/geometry.h"
 #include "metrology/detect/line_segments.h"
 #include "metrology/detect/refine.h"
+#include "metrology/detect/room_box.h"
 #include "metrology/detect/working_image.h"
 
 namespace pw::metrology::detect {
@@ -21,12 +22,30 @@ constexpr double kMinCorridorConfidence = 0.15;
 constexpr int kMinPhotoSidePx = 32;
 // Inlier segments of a true vanishing point agree with it to a degree or so (the
 // five test corridors: 0.2-1.1); a "point" fitted to unrelated lines does not.
+// Up to the loose limit (noise and JPEG blocks bend short segments) it is a doubt.
 constexpr double kMaxCorridorRmsAngleDeg = 2.0;
+constexpr double kMaxLooseCorridorRmsAngleDeg = 3.0;
 // A boundary must follow an edge over a quarter of its outer half at least (people
 // or furniture may hide the rest).
 constexpr double kMinBoundaryEdgeCoverage = 0.25;
 // Each far-wall side must be an edge over this share of its middle stretch.
 constexpr double kMinFarSideCoverage = 0.3;
+// A sure answer: the far wall's top and sides seen along most of their length, its
+// foot (which clutter hides first) along half, and at least three of the four
+// boundaries running on from its corners.
+constexpr double kSureFarSideCoverage = 0.6;
+constexpr double kSureBottomSideCoverage = 0.5;
+constexpr double kSureBoundaryCoverage = 0.5;
+constexpr int kSureBoundaries = 3;
+constexpr double kRunOnCoverage = 0.5;  // of the stretch just inside a far corner
+// A focal length from a second vanishing point: the corridor's point at least this
+// share of the long side from the principal point along the second one's direction,
+// and the estimate settled to this share within kFocalIterations refits.
+constexpr double kMinSecondPointOffsetOfLongSide = 0.02;
+constexpr double kFocalSettledShare = 0.005;
+constexpr int kFocalIterations = 5;
+// Two fits whose far walls are within this (pixels, worst corner) agree.
+constexpr double kAgreementPx = 2.0;
 
 CorridorDetection notFound(CorridorDetection d, const std::string& reason) {
   d.found = false;
@@ -55,6 +74,206 @@ bool allFinite(const std::array<CornerEstimate, 8>& corners) {
 Result<ManhattanFrame> frameWithFocal(const std::vector<LineSegment>& segments, double focalPx, glm::dvec2 pp,
                                       cv::Size size) {
   return estimateManhattanFrame(segments, PinholeCamera{focalPx, pp}, size);
+}
+
+// The focal length from the corridor's vanishing point and a second finite one
+// (focalFromOrthogonalPoints), with the frame found with it. The frame's labels
+// depend on the focal length it was found with, so the two are iterated to a fixed
+// point; nullopt (the default then) when no second point fixes it: none is finite,
+// the corridor's point lies too near the principal point along the second one's
+// direction (f^2 = D d is then the product of a large and a noisy number: a camera
+// turned by under a degree or so), the value is not a lens's, or it does not settle.
+std::optional<std::pair<double, ManhattanFrame>> focalFromSecondPoint(const std::vector<LineSegment>& segments,
+                                                                      ManhattanFrame frame, glm::dvec2 pp, cv::Size size) {
+  const double longSide = std::max(size.width, size.height), diagonal = std::hypot(size.width, size.height);
+  double previous = 0;
+  for (int iteration = 0; iteration < kFocalIterations; ++iteration) {
+    std::optional<double> f;
+    double bestOffset = 0;
+    for (int role : {1, 2}) {
+      VanishingPoint second = role == 1 ? frame.horizontal : frame.vertical;
+      // Far out and found on the sphere with a focal length that is only a guess: its
+      // position refitted in the image, where it does not depend on it.
+      std::vector<int> members;
+      for (size_t i = 0; i < frame.labels.size(); ++i)
+        if (frame.labels[i] == role) members.push_back(static_cast<int>(i));
+      if (second.isFinite() && members.size() >= 2) {
+        second.point = glm::normalize(homogeneous(refineFinitePoint(second.pixel(), segments, members)));
+      }
+      const std::optional<double> candidate = focalFromOrthogonalPoints(frame.corridor, second, pp, diagonal);
+      if (!candidate) continue;
+      const double offset =
+          std::abs(glm::dot(frame.corridor.pixel() - pp, glm::normalize(second.pixel() - pp)));
+      if (offset >= kMinSecondPointOffsetOfLongSide * longSide && offset > bestOffset) f = candidate, bestOffset = offset;
+    }
+    if (!f || !(*f > 0.3 * longSide && *f < 5.0 * longSide)) return std::nullopt;
+    auto refitted = frameWithFocal(segments, *f, pp, size);
+    if (!refitted) return std::nullopt;
+    frame = std::move(*refitted);
+    if (std::abs(*f - previous) <= kFocalSettledShare * *f) return std::pair{*f, std::move(frame)};
+    previous = *f;
+  }
+  return std::nullopt;
+}
+
+// What the far-wall searches share.
+struct FarWallSearch {
+  const cv::Mat& photo;
+  const WorkingImage& work;
+  const DetectOptions& options;
+  glm::dvec2 vp, vpWork;  // the corridor's vanishing point, full-resolution and working pixels
+};
+
+// A detection and how well the image bears out its box: the mean edge coverage of
+// the far wall's four sides and of the four boundaries beyond it.
+struct Candidate {
+  CorridorDetection detection;
+  double support = 0;
+};
+
+void doubt(CorridorDetection& d, const std::string& why) {
+  d.confident = false;
+  d.doubts.push_back(why);
+}
+
+double farWallDistancePx(const CorridorDetection& a, const CorridorDetection& b) {
+  double worst = 0;
+  for (int k = 0; k < 4; ++k) worst = std::max(worst, glm::length(a.corners[k].px - b.corners[k].px));
+  return worst;
+}
+
+// Share of the ray from the vanishing point through `corner` (working pixels) that
+// runs along an edge just before the corner, over the far wall.
+double edgeBeforeCorner(const WorkingImage& work, glm::dvec2 vp, glm::dvec2 corner) {
+  const double radius = glm::length(corner - vp);
+  const glm::dvec2 along = (corner - vp) / radius, normal(-along.y, along.x);
+  // Stopping short of the corner keeps the far wall's own sides (a pixel wide, met
+  // at an angle) out of the stretch.
+  int samples = 0, covered = 0;
+  for (double t = radius - std::max(10.0, 0.25 * radius); t <= radius - 5; t += 1.0, ++samples) {
+    double across = 0;
+    for (double k = -1; k <= 1; k += 1)
+      across = std::max(across, std::abs(glm::dot(work.gradient(vp + t * along + k * normal), normal)));
+    covered += across > kEdgeGreyPerPx;
+  }
+  return samples >= 4 ? static_cast<double>(covered) / samples : 0.0;
+}
+
+// The doubts a found corridor leaves: where the box's evidence is thin. A wrong far
+// wall (a cabinet's front, a doorway nearer the camera) has the sides of a rectangle,
+// but the boundaries do not run on from its corners across the walls.
+void assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& far,
+            const std::array<RefinedBoundary, kBoundaryCount>& rays) {
+  // The boundaries start at the far wall's corners; where they run on inside it the
+  // rectangle is a section nearer the camera (a band, a doorway, a lamp's light).
+  int runOn = 0;
+  for (int k = 0; k < 4; ++k) runOn += edgeBeforeCorner(s.work, s.vpWork, s.work.toWorking(far.corners[k])) >= kRunOnCoverage;
+  if (runOn >= 1) {
+    d.doubts.push_back(std::to_string(runOn) + (runOn == 1 ? " boundary runs" : " boundaries run") +
+                       " on inside the far wall's corners");
+  }
+  static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
+  for (int side = 0; side < 4; ++side) {
+    const double need = side == kBottomSide ? kSureBottomSideCoverage : kSureFarSideCoverage;
+    if (far.sides[side].coverage < need) {
+      d.doubts.push_back(std::string("the far wall's ") + kSideNames[side] + " edge is seen along " +
+                         std::to_string(static_cast<int>(std::lround(100 * far.sides[side].coverage))) + "% of it");
+    }
+  }
+  int strongRays = 0;
+  for (int b = 0; b < kBoundaryCount; ++b) strongRays += rays[b].fit && rays[b].fit->coverage >= kSureBoundaryCoverage;
+  if (strongRays < kSureBoundaries) {
+    d.doubts.push_back("only " + std::to_string(strongRays) + " of the four boundaries run on from the far wall's corners");
+  }
+  d.confident = d.doubts.empty();
+}
+
+// From a far wall found on the working copy (corners in working pixels, `farT` its
+// depth in the cross-section family's terms) to the detection: the far wall's sides
+// and the boundaries beyond it fitted at full resolution, then P5..P8, and the
+// doubts it leaves. The error is the reason no corridor is there.
+Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection d, const Quad& farWork, double farT) {
+  const cv::Mat& photo = s.photo;
+  const WorkingImage& work = s.work;
+  const cv::Size size = photo.size();
+  const glm::dvec2 vp = s.vp;
+  // Full resolution: far wall sides, then the boundaries beyond it.
+  const double searchPx = 2.0 / work.scale + 2.0;
+  const double stepHalfWidthPx = std::max(2.0, 1.0 / work.scale);
+  Quad coarseFar;
+  for (int k = 0; k < 4; ++k) coarseFar[k] = work.toFull(farWork[k]);
+  const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx, stepHalfWidthPx);
+  for (int side = 0; side < 4; ++side) {
+    if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
+      static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
+      return makeError(std::string("the far wall's ") + kSideNames[side] + " edge is not in the photo");
+    }
+  }
+  if (!convexAround(far.corners, vp)) return makeError("the far wall's corners do not surround the vanishing point");
+  for (int k = 0; k < 4; ++k) {
+    d.corners[k] = {far.corners[k], far.cornerConfidence[k], far.cornerSigmaPx[k]};
+    if (!(far.corners[k].x >= 0 && far.corners[k].y >= 0 && far.corners[k].x <= size.width - 1 &&
+          far.corners[k].y <= size.height - 1)) {
+      return makeError("the far wall's corners fall outside the photo");
+    }
+  }
+  // The boundaries run from the vanishing point through the far wall's corners:
+  // those corners, fitted to a tenth of a pixel about a hundred pixels out, fix the
+  // rays' angles better than the angular profile did (a mortar joint one course
+  // below the ceiling can pull that by half a degree).
+  constexpr std::array<int, kBoundaryCount> kFarCornerOf = {2, 3, 0, 1};  // P3 P4 P1 P2
+  RecedingBoundaries throughCorners;
+  std::array<glm::dvec2, kBoundaryCount> cornerDirection{};
+  std::array<double, kBoundaryCount> fromRadius{};
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    const glm::dvec2 corner = far.corners[kFarCornerOf[b]];
+    cornerDirection[b] = glm::normalize(corner - vp);
+    throughCorners.angle[b] = std::atan2(cornerDirection[b].y, cornerDirection[b].x);
+    fromRadius[b] = 1.1 * glm::length(corner - vp) + 2.0;
+  }
+  // Fitted beyond the far wall, the rays say how well the image bears them out.
+  const auto rays = refineBoundaries(photo, vp, cornerDirection, fromRadius, searchPx, stepHalfWidthPx);
+  const CrossSectionFamily nearFamily(s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
+                                      throughCorners);
+
+  // P5..P8: on a marked cross-section (band, frame) when there is one, else at the
+  // nearest depth where all four stay inside the photo (the editor moves them).
+  std::optional<CrossSectionMatch> marked;
+  if (!s.options.nearAtImageEdge) marked = findMarkedCrossSection(work, nearFamily, farT);
+  constexpr std::array<int, 4> kNearCornerOfQuad = {6, 7, 4, 5};  // P7 P8 P5 P6
+  if (marked) {
+    Quad coarseNear;
+    for (int k = 0; k < 4; ++k) coarseNear[k] = work.toFull(marked->corners[k]);
+    // A band has two edges a few pixels apart and the scan stops at the first, its
+    // far (inner) one: a one-pixel step keeps the two apart, and a low bar keeps the
+    // inner edge where it borders a tile nearly as dark as the band.
+    const RefinedSection nearSection = refineCrossSection(photo, coarseNear, d.horizontal.point, d.vertical.point,
+                                                          searchPx, std::max(1.0, 1.0 / work.scale), 0.25);
+    for (int k = 0; k < 4; ++k) {
+      d.corners[kNearCornerOfQuad[k]] = {nearSection.corners[k], nearSection.cornerConfidence[k], nearSection.cornerSigmaPx[k]};
+    }
+    d.nearDepth = NearDepth::kMarkedCrossSection;
+  } else {
+    const CrossSectionFamily fullFamily(vp, d.horizontal.point, d.vertical.point, throughCorners);
+    const double t = fullFamily.largestInside(size, 0.01 * std::min(size.width, size.height));
+    auto q = fullFamily.at(t);
+    if (!q || t <= glm::length(far.corners[2] - vp)) return makeError("no room between the far wall and the photo's edge");
+    for (int k = 0; k < 4; ++k) {
+      const int b = std::array{kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight}[k];
+      // On a fitted boundary the corner's sideways position is measured; its depth is
+      // a convention, so it gets half that line's confidence.
+      const double confidence = rays[b].fit ? 0.5 * std::min(1.0, rays[b].fit->coverage) : 0.1;
+      const double sigma = rays[b].fit ? rays[b].fit->positionSigmaPx() : searchPx;
+      d.corners[kNearCornerOfQuad[k]] = {(*q)[k], confidence, sigma};
+    }
+    d.nearDepth = NearDepth::kImageEdge;
+  }
+  if (!allFinite(d.corners)) return makeError("the fitted corners are degenerate");
+  d.found = true;
+  assess(d, s, far, rays);
+  Candidate c{std::move(d), 0.0};
+  for (int k = 0; k < 4; ++k) c.support += far.sides[k].coverage / 8 + (rays[k].fit ? rays[k].fit->coverage : 0.0) / 8;
+  return c;
 }
 
 }  // namespace
@@ -101,14 +320,10 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   auto frame = frameWithFocal(segments, d.focalPx, pp, size);
   if (!frame) return notFound(d, frame.message());
   if (!options.focalPx) {
-    std::optional<double> f = focalFromOrthogonalPoints(frame->corridor, frame->horizontal, pp, diagonal);
-    if (!f) f = focalFromOrthogonalPoints(frame->corridor, frame->vertical, pp, diagonal);
-    const double longSide = std::max(size.width, size.height);
-    if (f && *f > 0.3 * longSide && *f < 5.0 * longSide) {
-      d.focalPx = *f;
+    if (auto second = focalFromSecondPoint(segments, *frame, pp, size)) {
+      d.focalPx = second->first;
       d.focalSource = FocalSource::kVanishingPoints;
-      frame = frameWithFocal(segments, d.focalPx, pp, size);
-      if (!frame) return notFound(d, frame.message());
+      frame = std::move(second->second);
     } else {
       d.warnings.push_back("focal length not given and the photo has no second finite vanishing point: assumed " +
                            std::to_string(static_cast<int>(std::lround(d.focalPx))) +
@@ -122,103 +337,76 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   if (!(vp.x >= 0 && vp.y >= 0 && vp.x <= size.width - 1 && vp.y <= size.height - 1)) {
     return notFound(d, "the lines meet outside the photo, not at a corridor's end");
   }
-  if (d.corridor.rmsAngleDeg > kMaxCorridorRmsAngleDeg) {
+  if (d.corridor.rmsAngleDeg > kMaxLooseCorridorRmsAngleDeg) {
     return notFound(d, "the receding lines do not meet in one point (rms " +
                            std::to_string(d.corridor.rmsAngleDeg).substr(0, 4) + " degrees)");
+  }
+  std::optional<std::string> looseVanishingPoint;
+  if (d.corridor.rmsAngleDeg > kMaxCorridorRmsAngleDeg) {
+    looseVanishingPoint = "the receding lines meet loosely (rms " + std::to_string(d.corridor.rmsAngleDeg).substr(0, 4) +
+                          " degrees)";
   }
   if (d.corridor.confidence < kMinCorridorConfidence) {
     return notFound(d, "too few receding lines around the vanishing point (confidence " +
                            std::to_string(d.corridor.confidence).substr(0, 4) + ")");
   }
 
-  // Boundaries and the far wall on the working copy.
-  const glm::dvec2 vpWork = work.toWorking(vp);
+  // The far wall on the working copy: first where the angular profile puts the four
+  // boundaries (the clean corridors), then, when that fails or leaves doubts, from the
+  // room's box fitted to all the edges (clutter hides boundaries).
+  const FarWallSearch search{photo, work, options, vp, work.toWorking(vp)};
+  std::string profileReason;
+  std::optional<Candidate> fromProfile;
   const glm::dvec2 horizon = directionTowards(d.horizontal.point, vp);
-  auto boundaries = findRecedingBoundaries(work, vpWork, std::atan2(horizon.y, horizon.x));
-  if (!boundaries) return notFound(d, boundaries.message());
-  for (int b = 0; b < kBoundaryCount; ++b) {
+  auto boundaries = findRecedingBoundaries(work, search.vpWork, std::atan2(horizon.y, horizon.x));
+  if (!boundaries) profileReason = boundaries.message();
+  for (int b = 0; boundaries && b < kBoundaryCount && profileReason.empty(); ++b) {
     if (boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) {
-      return notFound(d, std::string("no edge along the ") + boundaryName(b) + " boundary");
+      profileReason = std::string("no edge along the ") + boundaryName(b) + " boundary";
     }
   }
-  const CrossSectionFamily family(vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), *boundaries);
-  auto farWall = findFarWall(work, family);
-  if (!farWall) return notFound(d, farWall.message());
+  if (profileReason.empty()) {
+    const CrossSectionFamily family(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
+                                    *boundaries);
+    auto farWall = findFarWall(work, family);
+    if (!farWall) {
+      profileReason = farWall.message();
+    } else if (auto done = completeFromFarWall(search, d, farWall->corners, farWall->t); !done) {
+      profileReason = done.message();
+    } else {
+      fromProfile = std::move(*done);
+    }
+  }
+  if (fromProfile && looseVanishingPoint) doubt(fromProfile->detection, *looseVanishingPoint);
+  if (fromProfile && fromProfile->detection.confident) return fromProfile->detection;
 
-  // Full resolution: far wall sides, then the boundaries beyond it.
-  const double searchPx = 2.0 / work.scale + 2.0;
-  const double stepHalfWidthPx = std::max(2.0, 1.0 / work.scale);
-  Quad coarseFar;
-  for (int k = 0; k < 4; ++k) coarseFar[k] = work.toFull(farWall->corners[k]);
-  const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx, stepHalfWidthPx);
-  for (int side = 0; side < 4; ++side) {
-    if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
-      static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
-      return notFound(d, std::string("the far wall's ") + kSideNames[side] + " edge is not in the photo");
-    }
-  }
-  if (!convexAround(far.corners, vp)) return notFound(d, "the far wall's corners do not surround the vanishing point");
-  for (int k = 0; k < 4; ++k) {
-    d.corners[k] = {far.corners[k], far.cornerConfidence[k], far.cornerSigmaPx[k]};
-    if (!(far.corners[k].x >= 0 && far.corners[k].y >= 0 && far.corners[k].x <= size.width - 1 &&
-          far.corners[k].y <= size.height - 1)) {
-      return notFound(d, "the far wall's corners fall outside the photo");
-    }
-  }
-  // The boundaries run from the vanishing point through the far wall's corners:
-  // those corners, fitted to a tenth of a pixel about a hundred pixels out, fix the
-  // rays' angles better than the angular profile did (a mortar joint one course
-  // below the ceiling can pull that by half a degree).
-  constexpr std::array<int, kBoundaryCount> kFarCornerOf = {2, 3, 0, 1};  // P3 P4 P1 P2
-  RecedingBoundaries throughCorners = *boundaries;
-  std::array<glm::dvec2, kBoundaryCount> cornerDirection{};
-  std::array<double, kBoundaryCount> fromRadius{};
-  for (int b = 0; b < kBoundaryCount; ++b) {
-    const glm::dvec2 corner = far.corners[kFarCornerOf[b]];
-    cornerDirection[b] = glm::normalize(corner - vp);
-    throughCorners.angle[b] = std::atan2(cornerDirection[b].y, cornerDirection[b].x);
-    fromRadius[b] = 1.1 * glm::length(corner - vp) + 2.0;
-  }
-  // Fitted beyond the far wall, the rays say how well the image bears them out.
-  const auto rays = refineBoundaries(photo, vp, cornerDirection, fromRadius, searchPx, stepHalfWidthPx);
-  const CrossSectionFamily nearFamily(vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
-                                      throughCorners);
-
-  // P5..P8: on a marked cross-section (band, frame) when there is one, else at the
-  // nearest depth where all four stay inside the photo (the editor moves them).
-  std::optional<CrossSectionMatch> marked;
-  if (!options.nearAtImageEdge) marked = findMarkedCrossSection(work, nearFamily, farWall->t);
-  constexpr std::array<int, 4> kNearCornerOfQuad = {6, 7, 4, 5};  // P7 P8 P5 P6
-  if (marked) {
-    Quad coarseNear;
-    for (int k = 0; k < 4; ++k) coarseNear[k] = work.toFull(marked->corners[k]);
-    // A band has two edges a few pixels apart and the scan stops at the first, its
-    // far (inner) one: a one-pixel step keeps the two apart, and a low bar keeps the
-    // inner edge where it borders a tile nearly as dark as the band.
-    const RefinedSection nearSection = refineCrossSection(photo, coarseNear, d.horizontal.point, d.vertical.point,
-                                                          searchPx, std::max(1.0, 1.0 / work.scale), 0.25);
-    for (int k = 0; k < 4; ++k) {
-      d.corners[kNearCornerOfQuad[k]] = {nearSection.corners[k], nearSection.cornerConfidence[k], nearSection.cornerSigmaPx[k]};
-    }
-    d.nearDepth = NearDepth::kMarkedCrossSection;
+  std::string boxReason;
+  std::optional<Candidate> fromBox;
+  auto box = fitRoomBox(work, search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
+                        segments, frame->labels);
+  if (!box) {
+    boxReason = box.message();
+  } else if (auto done = completeFromFarWall(search, d, box->corners, glm::length(box->corners[2] - search.vpWork));
+             !done) {
+    boxReason = done.message();
   } else {
-    const CrossSectionFamily fullFamily(vp, d.horizontal.point, d.vertical.point, throughCorners);
-    const double t = fullFamily.largestInside(size, 0.01 * std::min(size.width, size.height));
-    auto q = fullFamily.at(t);
-    if (!q || t <= glm::length(far.corners[2] - vp)) return notFound(d, "no room between the far wall and the photo's edge");
-    for (int k = 0; k < 4; ++k) {
-      const int b = std::array{kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight}[k];
-      // On a fitted boundary the corner's sideways position is measured; its depth is
-      // a convention, so it gets half that line's confidence.
-      const double confidence = rays[b].fit ? 0.5 * std::min(1.0, rays[b].fit->coverage) : 0.1;
-      const double sigma = rays[b].fit ? rays[b].fit->positionSigmaPx() : searchPx;
-      d.corners[kNearCornerOfQuad[k]] = {(*q)[k], confidence, sigma};
-    }
-    d.nearDepth = NearDepth::kImageEdge;
+    fromBox = std::move(*done);
   }
-  if (!allFinite(d.corners)) return notFound(d, "the fitted corners are degenerate");
-  d.found = true;
-  return d;
+  if (fromBox && looseVanishingPoint) doubt(fromBox->detection, *looseVanishingPoint);
+  if (!fromProfile && !fromBox) return notFound(d, profileReason);
+  if (!fromProfile) return fromBox->detection;
+  if (!fromBox) return fromProfile->detection;
+  // Both found: agreeing, the box's checks stand for the profile's answer too.
+  CorridorDetection& profile = fromProfile->detection;
+  const double apartPx = farWallDistancePx(profile, fromBox->detection);
+  if (apartPx <= kAgreementPx) {
+    if (fromBox->detection.confident) profile.confident = true, profile.doubts.clear();
+    return profile;
+  }
+  CorridorDetection& better = fromBox->support >= fromProfile->support ? fromBox->detection : profile;
+  doubt(better, "two fits of the room disagree on the far wall (by " + std::to_string(static_cast<int>(std::lround(apartPx))) +
+                    " px)");
+  return better;
 }
 
 }  // namespace pw::metrology::detect

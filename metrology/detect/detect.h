@@ -11,9 +11,14 @@
 //                     the corridor vanishing point
 //   cross_sections    the far wall as the cross-section where the boundaries begin;
 //                     a marked cross-section (band, frame) nearer the camera
+//   room_box          when that fails or leaves doubts (clutter hides boundaries):
+//                     the far wall from the room's box fitted to all the edges at
+//                     once, in the photo rectified by the horizontal and vertical
+//                     points
 //   edge_fit          every side and boundary refitted at full resolution to
 //                     sub-pixel precision; corners as intersections of fitted lines;
-//                     the boundaries then run through the fitted far-wall corners
+//                     the boundaries then run through the fitted far-wall corners;
+//                     the doubts: thin evidence for the box (CorridorDetection)
 #pragma once
 
 #include <array>
@@ -64,6 +69,11 @@ struct CorridorDetection {
   VanishingPoint corridor, horizontal, vertical;  // full-resolution pixels
   std::array<CornerEstimate, 8> corners{};        // P1..P8
   NearDepth nearDepth = NearDepth::kImageEdge;
+  // found and sure of it: every check of the corridor's box passed. A found corridor
+  // that is not confident is a best guess for a person to check (detect exits 3);
+  // `doubts` says, one line each, what made it unsure.
+  bool confident = false;
+  std::vector<std::string> doubts;
   std::vector<std::string> warnings;
   int segmentCount = 0;
 };

@@ -58,10 +58,8 @@ void assignLabels(const std::vector<SphereSegment>& segs, const std::array<glm::
   }
 }
 
-// Refines a finite vanishing point in the image by Gauss-Newton on the distance of
-// each inlier segment's end points from the line joining its midpoint to the point
-// (the usual maximum-likelihood approximation, e.g. Tardif, ICCV 2009, eq. 2),
-// weighted by segment length.
+}  // namespace
+
 glm::dvec2 refineFinitePoint(glm::dvec2 v, const std::vector<LineSegment>& segments, const std::vector<int>& members) {
   const auto residual = [&](glm::dvec2 p, const LineSegment& s) {
     const glm::dvec2 m = 0.5 * (s.a + s.b);
@@ -92,6 +90,8 @@ glm::dvec2 refineFinitePoint(glm::dvec2 v, const std::vector<LineSegment>& segme
   }
   return v;
 }
+
+namespace {
 
 // RMS angle (degrees) between inlier segments and the lines from their midpoints
 // to the vanishing point.

@@ -51,6 +51,13 @@ struct ManhattanFrame {
 Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& segments, const PinholeCamera& camera,
                                               cv::Size imageSize);
 
+// Refines a finite vanishing point in the image by Gauss-Newton on the distance of
+// each member segment's end points from the line joining its midpoint to the point
+// (the usual maximum-likelihood approximation, e.g. Tardif, ICCV 2009, eq. 2),
+// weighted by segment length: unlike the fit on the Gaussian sphere, it does not
+// depend on the focal length.
+glm::dvec2 refineFinitePoint(glm::dvec2 point, const std::vector<LineSegment>& segments, const std::vector<int>& members);
+
 // Focal length from two finite vanishing points of orthogonal directions:
 // f^2 = -(v1 - c)·(v2 - c) with c the principal point (Hartley & Zisserman, 8.8.1).
 // nullopt when either point is at (or near) infinity or the product is not negative.

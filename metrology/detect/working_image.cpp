@@ -7,6 +7,30 @@
 
 namespace pw::metrology::detect {
 
+void colourGradient(const cv::Mat& bgr, cv::Mat& gradX, cv::Mat& gradY) {
+  cv::Mat dx, dy;
+  cv::Sobel(bgr, dx, CV_16S, 1, 0, 3);
+  cv::Sobel(bgr, dy, CV_16S, 0, 1, 3);
+  gradX.create(bgr.size(), CV_32F);
+  gradY.create(bgr.size(), CV_32F);
+  for (int y = 0; y < bgr.rows; ++y) {
+    const cv::Vec3s* px = dx.ptr<cv::Vec3s>(y);
+    const cv::Vec3s* py = dy.ptr<cv::Vec3s>(y);
+    float* ox = gradX.ptr<float>(y);
+    float* oy = gradY.ptr<float>(y);
+    for (int x = 0; x < bgr.cols; ++x) {
+      int best = 0, bestMag = -1;
+      for (int c = 0; c < 3; ++c) {
+        const int mag = px[x][c] * px[x][c] + py[x][c] * py[x][c];
+        if (mag > bestMag) bestMag = mag, best = c;
+      }
+      // Sobel's 3x3 kernel sums 8 pixel differences' worth: /8 gives grey levels per pixel.
+      ox[x] = px[x][best] * 0.125f;
+      oy[x] = py[x][best] * 0.125f;
+    }
+  }
+}
+
 WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
   WorkingImage w;
   // Shrink by a whole factor k: OpenCV's area resampling then averages exact k x k
@@ -24,27 +48,7 @@ WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
   }
   cv::cvtColor(w.bgr, w.gray, cv::COLOR_BGR2GRAY);
 
-  cv::Mat dx, dy;
-  cv::Sobel(w.bgr, dx, CV_16S, 1, 0, 3);
-  cv::Sobel(w.bgr, dy, CV_16S, 0, 1, 3);
-  w.gradX.create(w.bgr.size(), CV_32F);
-  w.gradY.create(w.bgr.size(), CV_32F);
-  for (int y = 0; y < w.bgr.rows; ++y) {
-    const cv::Vec3s* px = dx.ptr<cv::Vec3s>(y);
-    const cv::Vec3s* py = dy.ptr<cv::Vec3s>(y);
-    float* ox = w.gradX.ptr<float>(y);
-    float* oy = w.gradY.ptr<float>(y);
-    for (int x = 0; x < w.bgr.cols; ++x) {
-      int best = 0, bestMag = -1;
-      for (int c = 0; c < 3; ++c) {
-        const int mag = px[x][c] * px[x][c] + py[x][c] * py[x][c];
-        if (mag > bestMag) bestMag = mag, best = c;
-      }
-      // Sobel's 3x3 kernel sums 8 pixel differences' worth: /8 gives grey levels per pixel.
-      ox[x] = px[x][best] * 0.125f;
-      oy[x] = py[x][best] * 0.125f;
-    }
-  }
+  colourGradient(w.bgr, w.gradX, w.gradY);
   const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
   cv::Mat strong;
   cv::compare(cv::abs(w.gradX), kEdgeGreyPerPx, strong, cv::CMP_GT);

@@ -47,4 +47,8 @@ struct WorkingImage {
 // wall against a grey floor of the same brightness.
 WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx);
 
+// The colour gradient of `bgr` (CV_8UC3): per pixel, Sobel's derivatives of the
+// channel whose gradient is strongest, in grey levels per pixel (CV_32F each).
+void colourGradient(const cv::Mat& bgr, cv::Mat& gradX, cv::Mat& gradY);
+
 }  // namespace pw::metrology::detect

@@ -1,5 +1,6 @@
 // `photowalk detect` end to end: the shot it writes is read by `photowalk measure`;
-// no corridor is exit 2 with nothing written; bad input is exit 1 with one line.
+// an unsure corridor is exit 3 with a warning; no corridor is exit 2 with nothing
+// written; bad input is exit 1 with one line.
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -125,6 +126,28 @@ TEST_F(DetectCommand, UsesTheExifFocalLengthWhenNoneIsGiven) {
   const nlohmann::json m = nlohmann::json::parse(measure.out);
   EXPECT_NEAR(m["width_m"].get<double>(), c.widthM, 0.01 * c.widthM);
   EXPECT_NEAR(m["height_m"].get<double>(), c.heightM, 0.01 * c.heightM);
+}
+
+// An unsure best guess (clutter_8: the far wall's foot hidden by a cabinet and a
+// person) is written for a person to check: exit 3, one warning line saying why,
+// and the shot's detection says it too.
+TEST_F(DetectCommand, UnsureIsExitThreeWithAWarningAndTheShotWritten) {
+  const auto cases = pw::metrology::detect::testing::loadCorridorCases({"clutter_8"});
+  const auto& c = cases[0];
+  const fs::path shot = dir_ / "shot.json";
+  const CommandRun r = run("detect " + c.imagePath + " --focal-px " + std::to_string(c.focalPx) + " -o " + shot.string());
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("warning: unsure of this corridor"), std::string::npos) << r.err;
+  ASSERT_TRUE(fs::exists(shot));
+  const nlohmann::json doc = nlohmann::json::parse(slurp(shot));
+  EXPECT_FALSE(doc["detection"]["confident"].get<bool>());
+  EXPECT_FALSE(doc["detection"]["doubts"].empty());
+  // A confident detection says so too.
+  const auto clean = pw::metrology::detect::testing::loadCorridorCases({"corridor_a"});
+  const CommandRun sure = run("detect " + clean[0].imagePath + " --focal-px " + std::to_string(clean[0].focalPx) +
+                              " -o " + shot.string());
+  ASSERT_EQ(sure.exitCode, 0) << sure.err;
+  EXPECT_TRUE(nlohmann::json::parse(slurp(shot))["detection"]["confident"].get<bool>());
 }
 
 TEST_F(DetectCommand, NoCorridorIsExitTwoAndWritesNothing) {

@@ -25,9 +25,12 @@ glm::dvec2 leastSquaresMeet(const std::vector<std::pair<glm::dvec2, glm::dvec2>>
 }
 }  // namespace
 
-std::vector<CorridorCase> loadCorridorCases() {
+std::vector<CorridorCase> loadCorridorCases() { return loadCorridorCases(pw::groundtruth::groundTruthNames()); }
+
+std::vector<CorridorCase> loadCorridorCases(const std::vector<std::string>& names) {
   std::vector<CorridorCase> cases;
-  for (const pw::groundtruth::GroundTruth& g : pw::groundtruth::loadAllGroundTruth()) {
+  for (const std::string& name : names) {
+    const pw::groundtruth::GroundTruth g = pw::groundtruth::loadGroundTruth(name);
     CorridorCase c;
     c.name = g.name;
     c.imagePath = g.image.string();

@@ -26,8 +26,9 @@ struct CorridorCase {
   glm::dvec2 vanishingPoint{0, 0};
 };
 
-// Throws when a scene is missing.
+// Throws when a scene is missing. The clean corridors a-h, or the scenes named.
 std::vector<CorridorCase> loadCorridorCases();
+std::vector<CorridorCase> loadCorridorCases(const std::vector<std::string>& names);
 
 double medianOf(std::vector<double> values);
 

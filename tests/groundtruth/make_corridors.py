@@ -7,7 +7,7 @@ usage:
       and renders NAME.png with povray for every scene below. A scene whose .pov is
       unchanged and whose .png is there is not rendered again.
   make_corridors.py views OUTDIR [--only NAME,...]
-      renders every scene from the novel-view cameras below (NOVEL_VIEWS: cameras the
+      renders every clean corridor (corridor_*) from the novel-view cameras below (NOVEL_VIEWS: cameras the
       photo was not taken from) as NAME_view_KIND.png with NAME_view_KIND.json (the
       camera, as `view` writes it); unchanged .pov files are not rendered again.
   make_corridors.py view NAME OUT.png --eye X Y Z [--ypr YAW PITCH ROLL] [--size WxH]
@@ -54,6 +54,13 @@ MATERIALS = {
                "scale 0.08 } normal { granite 0.08 scale 0.3 } finish { diffuse 0.8 ambient 0.12 } }",
     "ceiling": "texture { pigment { color rgb <0.92,0.92,0.9> } finish { diffuse 0.7 ambient 0.25 } }",
     "far_wall": "texture { pigment { color rgb <0.52,0.56,0.50> } finish { diffuse 0.7 ambient 0.10 } }",
+    # A pale corridor: walls, floor, ceiling and far wall a few grey levels apart.
+    "pale_wall": "texture { pigment { bozo color_map { [0 color rgb <0.84,0.83,0.80>] [1 color rgb <0.81,0.80,0.77>] } "
+                 "scale 0.1 } finish { diffuse 0.75 ambient 0.2 } }",
+    "pale_floor": "texture { pigment { granite color_map { [0 color rgb <0.80,0.79,0.75>] [1 color rgb <0.74,0.73,0.70>] } "
+                  "scale 0.3 } finish { diffuse 0.75 ambient 0.2 } }",
+    "pale_ceiling": "texture { pigment { color rgb <0.88,0.88,0.86> } finish { diffuse 0.7 ambient 0.25 } }",
+    "pale_far": "texture { pigment { color rgb <0.80,0.80,0.77> } finish { diffuse 0.7 ambient 0.2 } }",
 }
 
 # The scenes. a-e are the shared corridors' numbers (camera straight down the
@@ -86,6 +93,148 @@ NOVEL_VIEWS = {
     "turned": lambda s: ([0.0, s["eye_y"], -s["length"] / 4.0], [35.0, 0.0, 0.0]),  # a quarter in, 35 deg to the left wall
     "back": lambda s: ([0.0, s["eye_y"], -s["length"] + 1.0], [180.0, 0.0, 0.0]),  # near the far wall, looking back
 }
+
+# Cluttered corridors (issue 15): what people's photos have along the walls. Each is a
+# box corridor like those above, furnished by furnish() from its seed: cabinets,
+# benches, people (a cylinder and a sphere), posters, side doors, ceiling lamps of
+# uneven brightness and a patch of light on a wall; some with the camera rolled, one
+# with clutter before the far wall, one pale with little contrast. The answers are the
+# room's corners as before: clutter hides some of them, it does not move them.
+CLUTTER_SCENES = [
+    dict(name="clutter_1", size=(800, 600), focal_px=660.0, width=2.6, height=2.8, length=11.0, near=4.5,
+         eye_x=0.2, eye_y=1.55, walls="plaster", floor="tile", fill_y=1.7, seed=1,
+         kinds=("cabinet", "cabinet", "person", "poster", "poster", "door", "lamp")),
+    dict(name="clutter_2", size=(800, 600), focal_px=700.0, width=3.0, height=3.0, length=14.0, near=5.0,
+         eye_x=-0.3, eye_y=1.6, roll=6.0, walls="brick", floor="wood_floor", fill_y=1.8, seed=2,
+         kinds=("bench", "bench", "person", "person", "poster", "door", "lamp")),
+    dict(name="clutter_3", size=(960, 640), focal_px=720.0, width=2.4, height=2.7, length=9.0, near=4.0,
+         eye_x=0.0, eye_y=1.5, roll=-10.0, walls="granite", floor="checker_floor", fill_y=1.6, seed=3,
+         kinds=("cabinet", "person", "poster", "poster", "door", "door", "lamp")),
+    dict(name="clutter_4", size=(800, 600), focal_px=640.0, width=3.4, height=3.2, length=16.0, near=5.5,
+         eye_x=0.5, eye_y=1.65, yaw=5.0, pitch=-3.0, roll=10.0, walls="wood_boards", floor="stone_floor",
+         fill_y=1.9, seed=4, kinds=("cabinet", "cabinet", "bench", "person", "person", "poster", "lamp")),
+    dict(name="clutter_5", size=(800, 600), focal_px=680.0, width=2.2, height=2.6, length=10.0, near=4.0,
+         eye_x=-0.2, eye_y=1.45, walls="tile", floor="wood_floor", fill_y=1.6, seed=5, far_clutter=True,
+         kinds=("cabinet", "person", "person", "poster", "door", "lamp")),
+    dict(name="clutter_6", size=(960, 640), focal_px=760.0, width=2.8, height=3.0, length=18.0, near=6.0,
+         eye_x=0.3, eye_y=1.7, pitch=4.0, roll=-7.0, walls="plaster", floor="checker_floor", fill_y=1.9, seed=6,
+         kinds=("bench", "cabinet", "person", "person", "person", "poster", "poster", "lamp")),
+    dict(name="clutter_7", size=(800, 600), focal_px=620.0, width=2.0, height=2.6, length=8.0, near=4.0,
+         eye_x=0.1, eye_y=1.4, yaw=-6.0, roll=4.0, walls="brick", floor="tile", fill_y=1.6, seed=7,
+         kinds=("cabinet", "cabinet", "poster", "door", "door", "lamp")),
+    dict(name="clutter_8", size=(800, 600), focal_px=700.0, width=3.2, height=3.0, length=20.0, near=5.0,
+         eye_x=-0.4, eye_y=1.6, roll=-4.0, walls="granite", floor="wood_floor", fill_y=1.8, seed=8, far_clutter=True,
+         kinds=("bench", "cabinet", "person", "person", "poster", "poster", "door", "lamp")),
+    dict(name="clutter_9", size=(800, 600), focal_px=650.0, width=2.6, height=2.8, length=12.0, near=4.5,
+         eye_x=0.2, eye_y=1.5, roll=5.0, walls="pale_wall", floor="pale_floor", ceiling="pale_ceiling",
+         far_wall="pale_far", fill_y=1.7, seed=9, kinds=("cabinet", "person", "poster", "lamp")),
+]
+CLUTTER_COLOURS = [(0.62, 0.45, 0.30), (0.30, 0.36, 0.48), (0.70, 0.70, 0.66), (0.25, 0.25, 0.27), (0.55, 0.20, 0.18),
+                   (0.35, 0.50, 0.35), (0.80, 0.72, 0.50), (0.15, 0.20, 0.35)]
+
+
+def furnish(s):
+    """The scene's clutter from its seed and kinds, in the model frame (metres): each
+    item a dict with its kind, the wall it stands against (side -1 left, +1 right) and
+    its extent along the corridor (z0 > z1, both between the far wall and the near end)."""
+    import random
+    rng = random.Random(s["seed"])
+    w2, h, l = s["width"] / 2.0, s["height"], s["length"]
+    items, gains = [], [rng.uniform(0.5, 1.5) for _ in range(4)]
+    colour = lambda: CLUTTER_COLOURS[rng.randrange(len(CLUTTER_COLOURS))]
+    for kind in s["kinds"]:
+        side = rng.choice((-1, 1))
+        z0 = -rng.uniform(0.3, 0.75 * l)
+        if kind == "cabinet":
+            items.append(dict(kind=kind, side=side, z=(z0, z0 - rng.uniform(0.8, 2.0)), depth=rng.uniform(0.35, 0.6),
+                              top=rng.uniform(0.8, 1.9), colour=colour()))
+        elif kind == "bench":
+            items.append(dict(kind=kind, side=side, z=(z0, z0 - rng.uniform(1.2, 2.2)), depth=0.4, top=0.45,
+                              colour=colour()))
+        elif kind == "person":
+            x = rng.uniform(-w2 + 0.35, w2 - 0.35)
+            items.append(dict(kind=kind, x=x, z=-rng.uniform(1.0, l - 1.0), top=rng.uniform(1.55, 1.9),
+                              colour=colour(), head=(0.85, 0.68, 0.55)))
+        elif kind == "poster":
+            y0 = rng.uniform(1.0, 1.5)
+            items.append(dict(kind=kind, side=side, z=(z0, z0 - rng.uniform(0.5, 1.0)), y=(y0, y0 + rng.uniform(0.5, 0.9)),
+                              colour=colour(), colour2=colour()))
+        elif kind == "door":
+            items.append(dict(kind=kind, side=side, z=(z0, z0 - 0.9), y=(0.0, 2.05), colour=colour()))
+        elif kind == "lamp":
+            items.append(dict(kind=kind, z=-rng.uniform(1.0, 0.6 * l), spot_side=side, spot_z=-rng.uniform(1.0, 0.7 * l)))
+    if s.get("far_clutter"):
+        # A cabinet against the far wall and a person before it: the far wall's foot hidden in part.
+        side = rng.choice((-1, 1))
+        items.append(dict(kind="cabinet", side=side, z=(-l + 0.5, -l), depth=0.45, top=1.1, colour=colour(), across=True))
+        items.append(dict(kind="person", x=-side * 0.2, z=-l + 1.5, top=1.75, colour=colour(), head=(0.85, 0.68, 0.55)))
+    return dict(s, clutter=items, light_gains=gains)
+
+
+def clutter_pov(s):
+    """The clutter items in POV-Ray's frame (Z = near - z)."""
+    w2, h, near = s["width"] / 2.0, s["height"], s["near"]
+    tex = lambda c, amb=0.12: "texture { pigment { color rgb <%.3f,%.3f,%.3f> } finish { diffuse 0.75 ambient %.2f } }" % (
+        c[0], c[1], c[2], amb)
+    box = lambda x0, y0, z0, x1, y1, z1, t: "box { <%.4f, %.4f, %.4f>, <%.4f, %.4f, %.4f> %s }\n" % (
+        x0, y0, near - z0, x1, y1, near - z1, t)
+    out = ["// clutter (make_corridors.py furnish)\n"]
+    for it in s["clutter"]:
+        k = it["kind"]
+        if k in ("cabinet", "bench", "poster", "door"):
+            side = it["side"]
+            wall = side * w2
+            za, zb = it["z"]
+        if k == "cabinet":
+            if it.get("across"):
+                # Against the far wall, from one side wall a third of the way across.
+                x0, x1 = (wall, wall - side * 0.35 * 2 * w2)
+                out.append(box(min(x0, x1), 0.0, za, max(x0, x1), it["top"], zb, tex(it["colour"])))
+            else:
+                inner = wall - side * it["depth"]
+                out.append(box(min(wall, inner), 0.0, za, max(wall, inner), it["top"], zb, tex(it["colour"])))
+                # Doors on its front: a dark line down the middle of the face.
+                mid = 0.5 * (za + zb)
+                out.append(box(inner - side * 0.005, 0.05, mid + 0.01, inner + side * 0.01, it["top"] - 0.05, mid - 0.01,
+                               tex((0.1, 0.1, 0.1))))
+        elif k == "bench":
+            inner = wall - side * it["depth"]
+            out.append(box(min(wall, inner), 0.40, za, max(wall, inner), 0.45, zb, tex(it["colour"])))
+            for zl in (za - 0.1, zb + 0.15):
+                out.append(box(min(wall, inner) + 0.05, 0.0, zl, max(wall, inner) - 0.05, 0.40, zl - 0.05,
+                               tex((0.2, 0.2, 0.2))))
+        elif k == "person":
+            x, z, top = it["x"], it["z"], it["top"]
+            out.append("cylinder { <%.4f, 0, %.4f>, <%.4f, %.4f, %.4f>, 0.19 %s }\n"
+                       % (x, near - z, x, top - 0.26, near - z, tex(it["colour"])))
+            out.append("sphere { <%.4f, %.4f, %.4f>, 0.12 %s }\n" % (x, top - 0.12, near - z, tex(it["head"])))
+        elif k == "poster":
+            c1, c2 = it["colour"], it["colour2"]
+            y0, y1 = it["y"]
+            pig = ("texture { pigment { gradient y color_map { [0 color rgb <%.3f,%.3f,%.3f>] [1 color rgb <%.3f,%.3f,%.3f>] } "
+                   "scale %.3f translate <0, %.3f, 0> } finish { ambient 0.15 } }" % (c1 + c2 + (y1 - y0, y0)))
+            out.append(box(wall - side * 0.01, y0, za, wall + side * 0.01, y1, zb, pig))
+        elif k == "door":
+            y0, y1 = it["y"]
+            # A frame proud of the wall and a darker panel inside it.
+            out.append(box(wall - side * 0.03, 0.0, za + 0.06, wall + side * 0.01, y1 + 0.06, zb - 0.06, tex((0.85, 0.85, 0.82))))
+            out.append(box(wall - side * 0.04, 0.0, za, wall + side * 0.01, y1, zb, tex(it["colour"], 0.08)))
+        elif k == "lamp":
+            z = it["z"]
+            out.append("cylinder { <0, %.4f, %.4f>, <0, %.4f, %.4f>, 0.01 %s }\n" % (h, near - z, h - 0.35, near - z, tex((0.2, 0.2, 0.2))))
+            out.append("cone { <0, %.4f, %.4f>, 0.05, <0, %.4f, %.4f>, 0.2 open %s }\n"
+                       % (h - 0.35, near - z, h - 0.5, near - z, tex((0.9, 0.85, 0.6), 0.6)))
+            out.append("light_source { <0, %.4f, %.4f> color rgb <0.45,0.42,0.35> fade_distance 2 fade_power 1 }\n"
+                       % (h - 0.55, near - z))
+            # A patch of sunlight on one wall (as through a window behind the camera).
+            sz = it["spot_z"]
+            out.append("light_source { <%.4f, %.4f, %.4f> color rgb <0.9,0.85,0.7> spotlight point_at <%.4f, 1.2, %.4f> "
+                       "radius 6 falloff 9 }\n" % (-it["spot_side"] * w2 * 0.8, h - 0.1, near - sz - 2.0,
+                                                   it["spot_side"] * w2, near - sz))
+    return "".join(out)
+
+
+SCENES += [furnish(s) for s in CLUTTER_SCENES]
 
 CORNERS = ["P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"]
 PLANES = {"front_wall": ["P1", "P2", "P4", "P3"], "left_wall": ["P7", "P1", "P3", "P5"],
@@ -164,16 +313,20 @@ def scene_pov(s, camera):
     walls, floor = MATERIALS[s["walls"]], MATERIALS[s["floor"]]
     out = ["// generated by tests/groundtruth/make_corridors.py; ground truth in the JSON beside it\n",
            "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n", camera.pov(near)]
-    for z in range(1, int(far) + 2, 3):
-        out.append("light_source { <0, %.3f, %.3f> color rgb 0.38 fade_distance 3 fade_power 1 }\n" % (h - 0.05, z))
+    gains = s.get("light_gains")  # uneven light: each ceiling lamp's own brightness
+    for i, z in enumerate(range(1, int(far) + 2, 3)):
+        gain = 0.38 * gains[i % len(gains)] if gains else 0.38
+        out.append("light_source { <0, %.3f, %.3f> color rgb %s fade_distance 3 fade_power 1 }\n"
+                   % (h - 0.05, z, "%.2f" % gain if gains else "0.38"))
     out.append("light_source { <%.9f, %.9f, -1.000000000> color rgb 0.25 shadowless }\n" % (0.0, s["fill_y"]))
     out.append("// left, right walls, floor, ceiling, far wall, the end behind the camera\n")
     out.append("box { <%r, 0, -3>, <%r, %r, %r> %s }\n" % (-w2 - t, -w2, h, far, walls))
     out.append("box { <%r, 0, -3>, <%r, %r, %r> %s }\n" % (w2, w2 + t, h, far, walls))
     out.append("box { <%r, -0.2, -3>, <%r, 0, %r> %s }\n" % (-w2 - t, w2 + t, far, floor))
-    out.append("box { <%r, %r, -3>, <%r, %r, %r> %s }\n" % (-w2 - t, h, w2 + t, h + t, far, MATERIALS["ceiling"]))
-    out.append("box { <%r, -0.2, %r>, <%r, %r, %r> %s }\n" % (-w2 - t, far, w2 + t, h + t, far + t, MATERIALS["far_wall"]))
-    out.append("box { <%r, -0.2, -3.2>, <%r, %r, -3> %s }\n" % (-w2 - t, w2 + t, h + t, MATERIALS["far_wall"]))
+    ceiling, far_wall = MATERIALS[s.get("ceiling", "ceiling")], MATERIALS[s.get("far_wall", "far_wall")]
+    out.append("box { <%r, %r, -3>, <%r, %r, %r> %s }\n" % (-w2 - t, h, w2 + t, h + t, far, ceiling))
+    out.append("box { <%r, -0.2, %r>, <%r, %r, %r> %s }\n" % (-w2 - t, far, w2 + t, h + t, far + t, far_wall))
+    out.append("box { <%r, -0.2, -3.2>, <%r, %r, -3> %s }\n" % (-w2 - t, w2 + t, h + t, far_wall))
     out.append("// a door and a picture on the far wall\n")
     out.append("box { <-0.45, 0, %r>, <0.45, 2.1, %r> texture { pigment { color rgb <0.35,0.22,0.12> } finish { ambient 0.12 } } }\n"
                % (far - 0.02, far))
@@ -187,6 +340,8 @@ def scene_pov(s, camera):
     out.append("box { <%r, 0.001, %r>, <%r, %r, %r> texture { Band } }\n" % (w2 - 0.001, z0, w2 + 0.01, h - 0.001, near))
     out.append("box { <%r, 0.001, %r>, <%r, -0.01, %r> texture { Band } }\n" % (-w2, z0, w2, near))
     out.append("box { <%r, %r, %r>, <%r, %r, %r> texture { Band } }\n" % (-w2, h - 0.001, z0, w2, h + 0.01, near))
+    if s.get("clutter"):
+        out.append(clutter_pov(s))
     return "".join(out)
 
 
@@ -241,14 +396,17 @@ def render(pov_path, png_path, size):
     os.replace(tmp, png_path)
 
 
-def cmd_scenes(args):
-    if not shutil.which("povray") and not args.no_render:
+def selected_scenes(args, need_povray):
+    """The scenes --only names (all without it), with args.out made; exits without povray."""
+    if need_povray and not shutil.which("povray"):
         sys.exit("make_corridors: povray is not installed (scripts/install-deps.sh installs it)")
     os.makedirs(args.out, exist_ok=True)
     only = set(args.only.split(",")) if args.only else None
-    for s in SCENES:
-        if only and s["name"] not in only:
-            continue
+    return [s for s in SCENES if not only or s["name"] in only]
+
+
+def cmd_scenes(args):
+    for s in selected_scenes(args, not args.no_render):
         camera = photo_camera(s)
         base = os.path.join(args.out, s["name"])
         changed = write_if_changed(base + ".pov", scene_pov(s, camera))
@@ -282,13 +440,9 @@ def cmd_view(args):
 
 
 def cmd_views(args):
-    if not shutil.which("povray"):
-        sys.exit("make_corridors: povray is not installed (scripts/install-deps.sh installs it)")
-    os.makedirs(args.out, exist_ok=True)
-    only = set(args.only.split(",")) if args.only else None
-    for s in SCENES:
-        if only and s["name"] not in only:
-            continue
+    for s in selected_scenes(args, True):
+        if not s["name"].startswith("corridor_"):
+            continue  # the clean corridors only
         w = NOVEL_VIEW_WIDTH
         h = int(round(w * s["size"][1] / s["size"][0]))
         for kind, place in NOVEL_VIEWS.items():
