@@ -146,7 +146,7 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
     model.photoNearM = photoNearExtent(measurement, model.box, photo.cols, photo.rows);
     model.untexturedNearM = std::max(model.photoNearM, cameraZ + kBehindCameraM);
   }
-  metrology::PhotoPyramid pyramid(photo);
+  metrology::PhotoPyramid pyramid(photo, measurement.camera);  // through the lens's distortion
   for (int s = 0; s < kFaces; ++s) {
     const Surface surface = static_cast<Surface>(s);
     const Panel panel = surfacePanel(surface, model.box, model.photoNearM);

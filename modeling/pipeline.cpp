@@ -1,6 +1,12 @@
 #include "modeling/pipeline.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <opencv2/imgproc.hpp>
+
+#include "metrology/distortion.h"
 
 #include "modeling/tour.h"
 
@@ -14,11 +20,53 @@ Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const me
   return MeasuredShot{std::move(*loaded), std::move(*measurement)};
 }
 
-Result<engine::Camera> shotCamera(const std::filesystem::path& path) {
+Result<engine::Camera> shotCamera(const std::filesystem::path& path, metrology::Intrinsics* lens) {
   auto measured = measureShotFile(path);
   if (!measured) return measured.error();
   const cv::Mat& photo = measured->loaded.image;
+  if (lens) *lens = measured->measurement.camera;
   return photoCamera(measured->measurement, photo.cols, photo.rows, glm::dmat4(1.0));
+}
+
+LensFrame lensFrame(const engine::Camera& photoCamera, const metrology::Intrinsics& lens, int photoWidth,
+                    int photoHeight) {
+  // The pinhole pixels of the photo's outline bound what the lens shows.
+  glm::dvec2 lo(0.0), hi(photoWidth - 1.0, photoHeight - 1.0);
+  constexpr int kSteps = 64;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double u = (photoWidth - 1.0) * i / kSteps, v = (photoHeight - 1.0) * i / kSteps;
+    for (const glm::dvec2 p : {glm::dvec2(u, 0), glm::dvec2(u, photoHeight - 1.0), glm::dvec2(0, v),
+                               glm::dvec2(photoWidth - 1.0, v)}) {
+      if (const std::optional<glm::dvec2> q = metrology::undistortPixel(lens, p)) {
+        lo = glm::min(lo, *q);
+        hi = glm::max(hi, *q);
+      }
+    }
+  }
+  LensFrame frame;
+  // Whole pixels, two to spare for the bicubic filter.
+  frame.offsetPx = glm::ceil(-lo) + 2.0;
+  frame.width = static_cast<int>(std::ceil(hi.x + frame.offsetPx.x)) + 3;
+  frame.height = static_cast<int>(std::ceil(hi.y + frame.offsetPx.y)) + 3;
+  frame.camera = photoCamera;
+  engine::Intrinsics k = *photoCamera.intrinsics;
+  k.principalU += frame.offsetPx.x;
+  k.principalV += frame.offsetPx.y;
+  k.imageWidth = frame.width;
+  k.imageHeight = frame.height;
+  frame.camera.intrinsics = k;
+  return frame;
+}
+
+engine::Image distortFrame(const engine::Image& pinhole, const LensFrame& frame, const metrology::Intrinsics& lens,
+                           int photoWidth, int photoHeight) {
+  cv::Mat mapX, mapY;
+  metrology::distortionMaps(lens, cv::Size(photoWidth, photoHeight), frame.offsetPx, mapX, mapY);
+  const cv::Mat source(pinhole.height, pinhole.width, CV_8UC4, const_cast<uint8_t*>(pinhole.rgba.data()));
+  engine::Image out = engine::makeImage(photoWidth, photoHeight);
+  cv::Mat target(photoHeight, photoWidth, CV_8UC4, out.rgba.data());
+  cv::remap(source, target, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
+  return out;
 }
 
 Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,
