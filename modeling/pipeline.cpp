@@ -44,14 +44,18 @@ LensFrame lensFrame(const engine::Camera& photoCamera, const metrology::Intrinsi
     }
   }
   LensFrame frame;
-  // Whole pixels, two to spare for the bicubic filter.
+  // Whole photo pixels, two to spare for the filter.
   frame.offsetPx = glm::ceil(-lo) + 2.0;
-  frame.width = static_cast<int>(std::ceil(hi.x + frame.offsetPx.x)) + 3;
-  frame.height = static_cast<int>(std::ceil(hi.y + frame.offsetPx.y)) + 3;
+  const int s = frame.supersample;
+  frame.width = s * (static_cast<int>(std::ceil(hi.x + frame.offsetPx.x)) + 3);
+  frame.height = s * (static_cast<int>(std::ceil(hi.y + frame.offsetPx.y)) + 3);
+  // Photo pixel p (offset) is frame pixel s p + (s - 1) / 2: pixel centres at integers.
   frame.camera = photoCamera;
   engine::Intrinsics k = *photoCamera.intrinsics;
-  k.principalU += frame.offsetPx.x;
-  k.principalV += frame.offsetPx.y;
+  k.focalXPx *= s;
+  k.focalYPx *= s;
+  k.principalU = s * (k.principalU + frame.offsetPx.x) + 0.5 * (s - 1);
+  k.principalV = s * (k.principalV + frame.offsetPx.y) + 0.5 * (s - 1);
   k.imageWidth = frame.width;
   k.imageHeight = frame.height;
   frame.camera.intrinsics = k;
@@ -60,12 +64,19 @@ LensFrame lensFrame(const engine::Camera& photoCamera, const metrology::Intrinsi
 
 engine::Image distortFrame(const engine::Image& pinhole, const LensFrame& frame, const metrology::Intrinsics& lens,
                            int photoWidth, int photoHeight) {
-  cv::Mat mapX, mapY;
-  metrology::distortionMaps(lens, cv::Size(photoWidth, photoHeight), frame.offsetPx, mapX, mapY);
+  // The lens at the frame's resolution: s times the focal length, its principal point.
+  const int s = frame.supersample;
+  metrology::Intrinsics fine = lens;
+  fine.focalPx *= s;
+  fine.principalPointPx = static_cast<double>(s) * lens.principalPointPx + 0.5 * (s - 1);
+  cv::Mat mapX, mapY, samples;
+  metrology::distortionMaps(fine, cv::Size(s * photoWidth, s * photoHeight), static_cast<double>(s) * frame.offsetPx, mapX,
+                            mapY);
   const cv::Mat source(pinhole.height, pinhole.width, CV_8UC4, const_cast<uint8_t*>(pinhole.rgba.data()));
+  cv::remap(source, samples, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
   engine::Image out = engine::makeImage(photoWidth, photoHeight);
   cv::Mat target(photoHeight, photoWidth, CV_8UC4, out.rgba.data());
-  cv::remap(source, target, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
+  cv::resize(samples, target, target.size(), 0, 0, cv::INTER_AREA);
   return out;
 }
 
