@@ -37,7 +37,7 @@ struct MeasureOptions {
   // fit a lens, so they keep their residual (and the editor's warning).
   bool distortionFromCorners = true;
 };
-inline constexpr double kDistortionResidualPx = 1.0;
+inline constexpr double kDistortionResidualPx = 0.5;
 inline constexpr double kDistortionFittedPx = 0.5;
 
 struct Dimensions {

@@ -6,15 +6,19 @@
 // (today's detect and measure) and with it.
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "metrology/detect/detect.h"
 #include "metrology/measure.h"
 #include "modeling/shot_file.h"
+#include "tests/support/exif_jpeg.h"
 #include "tests/support/groundtruth.h"
+#include "tests/support/run_command.h"
 
 namespace pw::metrology::detect {
 namespace {
@@ -144,6 +148,80 @@ TEST(UndistortedGroundTruth, DetectFindsNoLensDistortion) {
                                           << " from " << d->plumbLineCount << " lines";
     }
   }
+}
+
+// The EXIF focal length (issue 15 part 4): a JPEG of the ground truth whose EXIF gives
+// FocalLength with FocalPlaneXResolution, measured with no focal length in the shot nor
+// on the command line, and detected then measured the same way.
+class ExifFocalLength : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(PW_BINARY_DIR) / "test-output" / "exif_focal";
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    truth_ = groundtruth::loadGroundTruth("corridor_d");
+    // A 5.0 mm lens on a sensor of 182.8 px/mm: the truth's 914.01 px to 1e-5.
+    test::ExifFields f;
+    f.focalLength = {500, 100};
+    pxPerMm_ = truth_.focalPx / 5.0;
+    f.focalPlaneXResolution = f.focalPlaneYResolution = std::pair<unsigned, unsigned>{unsigned(pxPerMm_ * 1000 + 0.5), 100};
+    f.focalPlaneResolutionUnit = 3;  // cm
+    exifFocalPx_ = 5.0 * double(unsigned(pxPerMm_ * 1000 + 0.5)) / 1000;
+    jpeg_ = dir_ / "corridor_d.jpg";
+    test::writeBytes(jpeg_, test::jpegWithApp1(cv::imread(truth_.image.string()), test::exifBlock(f)));
+  }
+  // `photowalk ARGS`, its stdout parsed when it exits 0.
+  nlohmann::json photowalk(const std::string& args, int expectExit = 0) {
+    const test::CommandRun run = test::runCommand((fs::path(PW_BINARY_DIR) / "photowalk").string() + " " + args);
+    EXPECT_EQ(run.exitCode, expectExit) << run.output;
+    if (run.exitCode != 0) return {{"output", run.output}};
+    const size_t brace = run.output.find('{');
+    return brace == std::string::npos ? nlohmann::json() : nlohmann::json::parse(run.output.substr(brace), nullptr, false);
+  }
+  void expectWithinHalfAPercent(const nlohmann::json& m, const std::string& what) {
+    ASSERT_TRUE(m.contains("width_m")) << what << ": " << m.dump();
+    const double w = 100 * (m["width_m"].get<double>() / truth_.widthM - 1);
+    const double h = 100 * (m["height_m"].get<double>() / truth_.heightM - 1);
+    const double l = 100 * (m["length_m"].get<double>() / truth_.lengthM - 1);
+    std::printf("[exif] %-28s focal %.2f px (%s): %+.3f %+.3f %+.3f %%\n", what.c_str(), m["camera"]["focal_px"].get<double>(),
+                m["camera"]["focal_source"].get<std::string>().c_str(), w, h, l);
+    EXPECT_LT(std::max({std::abs(w), std::abs(h), std::abs(l)}), 0.5) << what;
+  }
+  fs::path dir_, jpeg_;
+  groundtruth::GroundTruth truth_;
+  double pxPerMm_ = 0, exifFocalPx_ = 0;
+};
+
+TEST_F(ExifFocalLength, MeasureTakesItWhenTheShotGivesNone) {
+  nlohmann::json shot = {{"image", jpeg_.filename().string()}, {"camera_height_m", truth_.cameraHeightM}};
+  for (int k = 0; k < kCornerCount; ++k) shot["corners_px"][cornerName(k)] = {truth_.cornersPx[k].x, truth_.cornersPx[k].y};
+  std::ofstream(dir_ / "no_focal.json") << shot.dump();
+  const nlohmann::json m = photowalk("measure " + (dir_ / "no_focal.json").string());
+  ASSERT_TRUE(m.contains("camera")) << m.dump();
+  EXPECT_NEAR(m["camera"]["focal_px"].get<double>(), exifFocalPx_, 1e-6);
+  EXPECT_EQ(m["camera"]["focal_source"].get<std::string>().rfind("EXIF FocalLength 5.00 mm with FocalPlaneXResolution", 0), 0u)
+      << m["camera"]["focal_source"];
+  expectWithinHalfAPercent(m, "measure, exact corners");
+  // The command line's focal length comes first.
+  const nlohmann::json given = photowalk("measure " + (dir_ / "no_focal.json").string() + " --focal-px 900");
+  EXPECT_EQ(given["camera"]["focal_px"], 900.0);
+  EXPECT_EQ(given["camera"]["focal_source"], "given");
+  // A PNG has no EXIF: the shot is refused, saying what is missing.
+  shot["image"] = truth_.image.string();
+  std::ofstream(dir_ / "png_no_focal.json") << shot.dump();
+  const nlohmann::json refused = photowalk("measure " + (dir_ / "png_no_focal.json").string(), 1);
+  const std::string output = refused["output"];
+  EXPECT_NE(output.find("no EXIF focal length"), std::string::npos) << output;
+  EXPECT_EQ(output.find('\n'), output.size() - 1) << output;
+}
+
+TEST_F(ExifFocalLength, DetectThenMeasureWithNoFocalLengthGiven) {
+  const fs::path shot = dir_ / "detected.json";
+  const test::CommandRun detect = test::runCommand((fs::path(PW_BINARY_DIR) / "photowalk").string() + " detect " +
+                                                   jpeg_.string() + " --camera-height " +
+                                                   std::to_string(truth_.cameraHeightM) + " -o " + shot.string());
+  ASSERT_EQ(detect.exitCode, 0) << detect.output;
+  expectWithinHalfAPercent(photowalk("measure " + shot.string()), "detect then measure");
 }
 
 }  // namespace

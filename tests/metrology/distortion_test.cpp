@@ -2,6 +2,7 @@
 // projectPoints, measure through the lens on synthetic corridors with known answers,
 // and the rectifier sampling a distorted photo through it.
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -102,6 +103,56 @@ TEST(Distortion, WithoutItTheLensBiasesTheBox) {
   auto m = measureCorridor(s);
   ASSERT_TRUE(m.ok()) << m.message();
   EXPECT_GT(std::abs(m->size.lengthM / c.lengthM - 1.0), 0.005);
+}
+
+TEST(Distortion, MeasureFindsTheLensInTheCornersResidual) {
+  // A turned camera off the centre line: the box's corners through a lens do not fit a
+  // pinhole's box, and a k1 explains that.
+  SyntheticCorridor c;
+  c.yawDeg = 8, c.pitchDeg = -5, c.rollDeg = 3, c.cameraXM = 0.4;
+  for (double k1 : {-0.1, -0.2}) {
+    Shot s = distortedShot(c, lensOf(c, k1));
+    s.distortion.reset();  // not known
+    auto m = measureCorridor(s);
+    ASSERT_TRUE(m.ok()) << m.message();
+    EXPECT_EQ(m->distortionSource, DistortionSource::kCorners) << k1;
+    EXPECT_NEAR(m->camera.distortion.k1, k1, 1e-4);
+    EXPECT_NEAR(m->size.lengthM, c.lengthM, 1e-4 * c.lengthM);
+    MeasureOptions pinholeOnly;
+    pinholeOnly.distortionFromCorners = false;
+    auto without = measureCorridor(s, pinholeOnly);
+    ASSERT_TRUE(without.ok());
+    EXPECT_EQ(without->distortionSource, DistortionSource::kNone);
+    EXPECT_GT(without->reprojectionRmsPx, kDistortionResidualPx);
+    std::printf("[distortion] corners' residual, k1 %.2f: %.2f px without a lens, found k1 %.5f; length %+.3f%% -> %+.5f%%\n",
+                k1, without->reprojectionRmsPx, m->camera.distortion.k1, 100 * (without->size.lengthM / c.lengthM - 1),
+                100 * (m->size.lengthM / c.lengthM - 1));
+  }
+}
+
+TEST(Distortion, MeasureInventsNoLensForAMisplacedCorner) {
+  SyntheticCorridor c;
+  c.yawDeg = 8, c.pitchDeg = -5, c.rollDeg = 3, c.cameraXM = 0.4;
+  for (int corner : {P1, P3, P5, P8}) {
+    for (const glm::dvec2 nudge : {glm::dvec2(3, 0), glm::dvec2(0, -6), glm::dvec2(8, 8), glm::dvec2(-12, 5)}) {
+      Shot s = c.shot();
+      s.cornersPx[corner] += nudge;
+      auto m = measureCorridor(s);
+      ASSERT_TRUE(m.ok()) << m.message();
+      EXPECT_EQ(m->distortionSource, DistortionSource::kNone) << cornerName(corner) << " k1 " << m->camera.distortion.k1;
+      EXPECT_GT(m->reprojectionRmsPx, kDistortionResidualPx) << cornerName(corner);
+    }
+  }
+  // Nor for exact corners of a pinhole (nothing to explain), nor a lens known to be none.
+  auto exact = measureCorridor(c.shot());
+  ASSERT_TRUE(exact.ok());
+  EXPECT_EQ(exact->distortionSource, DistortionSource::kNone);
+  Shot known = distortedShot(c, lensOf(c, -0.2));
+  known.distortion = RadialDistortion{};
+  auto none = measureCorridor(known);
+  ASSERT_TRUE(none.ok());
+  EXPECT_EQ(none->distortionSource, DistortionSource::kShot);
+  EXPECT_TRUE(none->camera.distortion.isNone());
 }
 
 TEST(Distortion, BadCoefficientsAreOneLineErrors) {
