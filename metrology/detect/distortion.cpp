@@ -35,11 +35,8 @@ constexpr double kMinExplained = 0.02;
 constexpr double kMinCornerShiftPx = 1.0;
 // The k1 searched (normalised by the stand-in focal length).
 constexpr double kMinK1 = -0.6, kMaxK1 = 0.4;
-constexpr int kGridSteps = 50;
-
-struct Chain {
-  std::vector<glm::dvec2> pointsPx;  // sub-pixel edge points, full resolution
-};
+constexpr int kGridSteps = 25;
+constexpr int kGoldenSteps = 25;  // the bracket of two grid steps to 1e-5 of it
 
 glm::dvec2 direction(const LineSegment& s) { return (s.b - s.a) / s.lengthPx; }
 
@@ -143,31 +140,46 @@ void sampleEdge(const WorkingImage& work, const LineSegment& s, std::vector<glm:
   }
 }
 
-// The points undistorted by k1 (normalised by `lens`'s focal length about its
-// principal point): x = x_d / (1 + k1 |x|²), iterated.
-void undistortInto(const Intrinsics& lens, double k1, const std::vector<glm::dvec2>& in, std::vector<glm::dvec2>& out) {
-  out.resize(in.size());
-  for (size_t i = 0; i < in.size(); ++i) {
-    const glm::dvec2 xd = (in[i] - lens.principalPointPx) / lens.focalPx;
-    glm::dvec2 x = xd;
-    for (int it = 0; it < 10; ++it) x = xd / (1.0 + k1 * glm::dot(x, x));
-    out[i] = lens.principalPointPx + lens.focalPx * x;
+// A chain's edge points normalised by the lens's focal length about its principal
+// point, with their radii: what every trial k1 undistorts.
+struct NormalisedChain {
+  std::vector<glm::dvec2> x;
+  std::vector<double> radius;
+};
+
+NormalisedChain normalise(const Intrinsics& lens, const std::vector<glm::dvec2>& pointsPx) {
+  NormalisedChain n;
+  for (const glm::dvec2& p : pointsPx) {
+    n.x.push_back((p - lens.principalPointPx) / lens.focalPx);
+    n.radius.push_back(glm::length(n.x.back()));
   }
+  return n;
 }
 
-// Sum of squared distances of the points from their total-least-squares line (the
-// smaller eigenvalue of their scatter).
-double straightnessCost(const std::vector<glm::dvec2>& p) {
-  glm::dvec2 mean(0.0);
-  for (const glm::dvec2& q : p) mean += q;
-  mean /= static_cast<double>(p.size());
+// The pinhole radius the lens r (1 + k1 r²) takes to `distorted` (Newton's method from
+// r = distorted; a few steps converge within the model's one-to-one part).
+double undistortedRadius(double k1, double distorted) {
+  double r = distorted;
+  for (int it = 0; it < 5; ++it) r -= (r * (1.0 + k1 * r * r) - distorted) / (1.0 + 3.0 * k1 * r * r);
+  return r;
+}
+
+// Sum of squared distances (pixels²) of the chain's points undistorted by k1 from their
+// total-least-squares line: the smaller eigenvalue of their scatter.
+double straightnessCost(const NormalisedChain& chain, double k1, double focalPx) {
+  glm::dvec2 sum(0.0);
   double sxx = 0, sxy = 0, syy = 0;
-  for (const glm::dvec2& q : p) {
-    const glm::dvec2 d = q - mean;
-    sxx += d.x * d.x, sxy += d.x * d.y, syy += d.y * d.y;
+  for (size_t i = 0; i < chain.x.size(); ++i) {
+    const double r = chain.radius[i];
+    const glm::dvec2 q = r > 0 ? chain.x[i] * (undistortedRadius(k1, r) / r) : chain.x[i];
+    sum += q;
+    sxx += q.x * q.x, sxy += q.x * q.y, syy += q.y * q.y;
   }
+  const double n = static_cast<double>(chain.x.size());
+  const glm::dvec2 mean = sum / n;
+  sxx -= n * mean.x * mean.x, sxy -= n * mean.x * mean.y, syy -= n * mean.y * mean.y;
   const double half = 0.5 * (sxx + syy), root = std::sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
-  return std::max(0.0, half - root);
+  return std::max(0.0, half - root) * focalPx * focalPx;
 }
 
 struct ChainCosts {
@@ -175,12 +187,10 @@ struct ChainCosts {
   std::vector<double> perChain;
 };
 
-ChainCosts costs(const Intrinsics& lens, double k1, const std::vector<Chain>& chains) {
+ChainCosts costs(const Intrinsics& lens, double k1, const std::vector<NormalisedChain>& chains) {
   ChainCosts c;
-  std::vector<glm::dvec2> undistorted;
-  for (const Chain& chain : chains) {
-    undistortInto(lens, k1, chain.pointsPx, undistorted);
-    c.perChain.push_back(straightnessCost(undistorted));
+  for (const NormalisedChain& chain : chains) {
+    c.perChain.push_back(straightnessCost(chain, k1, lens.focalPx));
     c.total += c.perChain.back();
   }
   return c;
@@ -188,7 +198,7 @@ ChainCosts costs(const Intrinsics& lens, double k1, const std::vector<Chain>& ch
 
 // The k1 in [kMinK1, kMaxK1] that makes the chains straightest: a grid, then golden
 // sections about its best step.
-double bestK1(const Intrinsics& lens, const std::vector<Chain>& chains) {
+double bestK1(const Intrinsics& lens, const std::vector<NormalisedChain>& chains) {
   double best = 0, bestCost = costs(lens, 0.0, chains).total;
   for (int i = 0; i <= kGridSteps; ++i) {
     const double k = kMinK1 + (kMaxK1 - kMinK1) * i / kGridSteps;
@@ -200,7 +210,7 @@ double bestK1(const Intrinsics& lens, const std::vector<Chain>& chains) {
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
   double f1 = costs(lens, x1, chains).total, f2 = costs(lens, x2, chains).total;
-  for (int it = 0; it < 40; ++it) {
+  for (int it = 0; it < kGoldenSteps; ++it) {
     if (f1 < f2) {
       hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = costs(lens, x1, chains).total;
     } else {
@@ -210,9 +220,9 @@ double bestK1(const Intrinsics& lens, const std::vector<Chain>& chains) {
   return 0.5 * (lo + hi);
 }
 
-size_t pointCount(const std::vector<Chain>& chains) {
+size_t pointCount(const std::vector<NormalisedChain>& chains) {
   size_t n = 0;
-  for (const Chain& c : chains) n += c.pointsPx.size();
+  for (const NormalisedChain& c : chains) n += c.x.size();
   return n;
 }
 
@@ -225,37 +235,41 @@ std::optional<PlumbLineFit> fitPlumbLines(const WorkingImage& work, const std::v
   for (const LineSegment& s : segments) {
     if (s.lengthPx >= kMinSegmentOfDiagonal * diagonal) longOnes.push_back(s);
   }
-  std::vector<Chain> chains;
-  for (const std::vector<int>& indices : chainSegments(longOnes, diagonal)) {
-    Chain chain;
-    for (int i : indices) sampleEdge(work, longOnes[i], chain.pointsPx);
-    if (static_cast<int>(chain.pointsPx.size()) < kMinChainPoints) continue;
-    const glm::dvec2 first = chain.pointsPx.front();
-    double span = 0;
-    for (const glm::dvec2& p : chain.pointsPx) span = std::max(span, glm::length(p - first));
-    if (span < kMinChainOfDiagonal * diagonal) continue;
-    chains.push_back(std::move(chain));
-  }
-  if (static_cast<int>(chains.size()) < kMinLines) return std::nullopt;
-
   PlumbLineFit fit;
   fit.lens.focalPx = focalPx;
   fit.lens.principalPointPx = principalPointPx;
-  // Fit, drop the chains that stay bent (a curve, two lines joined, a wrong link), fit again.
+  std::vector<NormalisedChain> chains;
+  for (const std::vector<int>& indices : chainSegments(longOnes, diagonal)) {
+    std::vector<glm::dvec2> points;
+    for (int i : indices) sampleEdge(work, longOnes[i], points);
+    if (static_cast<int>(points.size()) < kMinChainPoints) continue;
+    double span = 0;
+    for (const glm::dvec2& p : points) span = std::max(span, glm::length(p - points.front()));
+    if (span < kMinChainOfDiagonal * diagonal) continue;
+    chains.push_back(normalise(fit.lens, points));
+  }
+  if (static_cast<int>(chains.size()) < kMinLines) return std::nullopt;
+
+  // Fit; a photo whose lines no k1 straightens noticeably stops here (most photos).
   double k1 = bestK1(fit.lens, chains);
+  const double straight = costs(fit.lens, 0.0, chains).total;
+  if (!(costs(fit.lens, k1, chains).total < (1.0 - 0.5 * kMinExplained) * straight)) return std::nullopt;
+  // Drop the chains that stay bent (a curve, two lines joined, a wrong link), fit again.
   for (int round = 0; round < 2; ++round) {
     const ChainCosts c = costs(fit.lens, k1, chains);
     std::vector<double> rms;
-    for (size_t i = 0; i < chains.size(); ++i) rms.push_back(std::sqrt(c.perChain[i] / chains[i].pointsPx.size()));
+    for (size_t i = 0; i < chains.size(); ++i) rms.push_back(std::sqrt(c.perChain[i] / chains[i].x.size()));
     std::vector<double> sorted = rms;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     const double limit = std::max(0.3, 3.0 * sorted[sorted.size() / 2]);
-    std::vector<Chain> kept;
+    std::vector<NormalisedChain> kept;
     for (size_t i = 0; i < chains.size(); ++i) {
       if (rms[i] <= limit) kept.push_back(std::move(chains[i]));
     }
+    const bool dropped = kept.size() < chains.size();
     chains = std::move(kept);
     if (static_cast<int>(chains.size()) < kMinLines) return std::nullopt;
+    if (!dropped) break;
     k1 = bestK1(fit.lens, chains);
   }
   fit.lineCount = static_cast<int>(chains.size());
@@ -264,16 +278,14 @@ std::optional<PlumbLineFit> fitPlumbLines(const WorkingImage& work, const std::v
   double shift = 0;
   const glm::dvec2 size(work.bgr.cols / work.scale, work.bgr.rows / work.scale);
   for (const glm::dvec2 corner : {glm::dvec2(0, 0), glm::dvec2(size.x - 1, 0), glm::dvec2(0, size.y - 1), size - 1.0}) {
-    std::vector<glm::dvec2> moved;
-    undistortInto(fit.lens, k1, {corner}, moved);
-    shift = std::max(shift, glm::length(moved[0] - corner));
+    shift = std::max(shift, glm::length(distortPixel(fit.lens, corner) - corner));
   }
   // Significance: each line's drop in squared bend over its own noise (an F ratio for
   // one parameter), averaged over the lines; and the share of the bend k1 explains.
   const ChainCosts before = costs(fit.lens, 0.0, chains), after = costs(fit.lens, k1, chains);
   double significance = 0;
   for (size_t i = 0; i < chains.size(); ++i) {
-    const double dof = static_cast<double>(chains[i].pointsPx.size()) - 2.0;
+    const double dof = static_cast<double>(chains[i].x.size()) - 2.0;
     significance += (before.perChain[i] - after.perChain[i]) / std::max(1e-12, after.perChain[i] / dof);
   }
   significance /= static_cast<double>(chains.size());
@@ -286,6 +298,7 @@ std::optional<PlumbLineFit> fitPlumbLines(const WorkingImage& work, const std::v
   }
   return fit;
 }
+
 Result<CorridorDetection> detectThroughLens(const cv::Mat& photo, const DetectOptions& options, const PlumbLineFit& fit) {
   // Lanczos: the edge fits run on this image, and a bicubic resampling's blur moved
   // a thin band's edge (the ground truth's marked frame) by a pixel or two.
