@@ -28,8 +28,9 @@ constexpr int kMinLines = 5;
 // each line's squared bend falls by kMinSignificance times its noise on average (the
 // ground truth's photos: -3.7 to -0.2 without distortion, 250 to 15700 through k1 =
 // -0.1 and -0.2), the lines' summed bend by kMinExplained (0.5% at most without
-// distortion, 4.9% to 79% with: brick joints are many and noisy), and the lens moves the photo's corner by at least
-// kMinCornerShiftPx (less is below what the corners can be placed to).
+// distortion, 4.9% to 79% with: brick joints are many and noisy), and the lens moves
+// the photo's corner by at least kMinCornerShiftPx (less is below what the corners
+// can be placed to).
 constexpr double kMinSignificance = 20.0;
 constexpr double kMinExplained = 0.02;
 constexpr double kMinCornerShiftPx = 1.0;

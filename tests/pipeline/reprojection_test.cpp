@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
@@ -37,17 +38,23 @@ struct Psnr {
   double withEdges = 0;
 };
 
-// Renders `scene` from the camera that took the shot's photo (corridor 0 of `built`)
-// and compares with the photo; `label` names the saved frame in test-output/.
-Psnr reprojection(const engine::Scene& scene, const BuiltModel& built, const metrology::Shot& shot, const cv::Mat& photo,
-                  const std::string& label) {
+// A renderer on the CPU device with the validation layers on, holding `scene`.
+Result<std::unique_ptr<engine::Renderer>> cpuRendererWith(const engine::Scene& scene) {
   engine::RendererOptions options;
   options.forceCpu = true;
   options.validation = engine::RendererOptions::Validation::kOn;
   auto renderer = engine::Renderer::create(options);
+  if (renderer) EXPECT_TRUE((*renderer)->setScene(scene).ok());
+  return renderer;
+}
+
+// Renders `scene` from the camera that took the shot's photo (corridor 0 of `built`)
+// and compares with the photo; `label` names the saved frame in test-output/.
+Psnr reprojection(const engine::Scene& scene, const BuiltModel& built, const metrology::Shot& shot, const cv::Mat& photo,
+                  const std::string& label) {
+  auto renderer = cpuRendererWith(scene);
   EXPECT_TRUE(renderer.ok()) << renderer.message();
   if (!renderer) return {};
-  EXPECT_TRUE((*renderer)->setScene(scene).ok());
   const engine::Camera camera = modeling::photoCamera(built.corridors[0].measurement, photo.cols, photo.rows,
                                                       built.plan.worldFromCorridor[0]);
   auto image = (*renderer)->renderToImage(camera, photo.cols, photo.rows);
@@ -146,12 +153,8 @@ TEST_P(ReprojectionThroughLens, RenderThroughTheLensGivesThePhotoBack) {
   const metrology::Intrinsics& lens = measured->measurement.camera;
   ASSERT_FALSE(lens.distortion.isNone());
 
-  engine::RendererOptions options;
-  options.forceCpu = true;
-  options.validation = engine::RendererOptions::Validation::kOn;
-  auto renderer = engine::Renderer::create(options);
+  auto renderer = cpuRendererWith(built->scene);
   ASSERT_TRUE(renderer.ok()) << renderer.message();
-  ASSERT_TRUE((*renderer)->setScene(built->scene).ok());
   const engine::Camera camera = modeling::photoCamera(measured->measurement, photo.cols, photo.rows,
                                                       built->plan.worldFromCorridor[0]);
   const modeling::LensFrame frame = modeling::lensFrame(camera, lens, photo.cols, photo.rows);
