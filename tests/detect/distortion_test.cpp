@@ -150,6 +150,42 @@ TEST(UndistortedGroundTruth, DetectFindsNoLensDistortion) {
   }
 }
 
+// The commands: detect writes the lens it found into the shot (and nothing for a photo
+// without distortion), measure says where its distortion came from.
+TEST(DistortionCommands, DetectWritesTheLensAndMeasureUsesIt) {
+  const fs::path dir = fs::path(PW_BINARY_DIR) / "test-output" / "distortion_commands";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string photowalk = (fs::path(PW_BINARY_DIR) / "photowalk").string();
+  const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_f");
+  const std::string given = " --focal-px " + std::to_string(truth.focalPx) + " --camera-height 1.55 -o ";
+  const auto slurp = [](const fs::path& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in, nullptr, false);
+  };
+  const test::CommandRun distorted =
+      test::runCommand(photowalk + " detect " + (fs::path(PW_BINARY_DIR) / "groundtruth-distorted" / "corridor_f_k020.png").string() +
+                       given + (dir / "lens.json").string());
+  ASSERT_EQ(distorted.exitCode, 0) << distorted.output;
+  EXPECT_NE(distorted.output.find("lens distortion k1 -0.19"), std::string::npos) << distorted.output;
+  const nlohmann::json lens = slurp(dir / "lens.json");
+  ASSERT_TRUE(lens.contains("distortion")) << lens.dump();
+  EXPECT_NEAR(lens["distortion"]["k1"].get<double>(), -0.2, 0.01);
+  EXPECT_EQ(lens["distortion"]["k2"], 0.0);
+  EXPECT_EQ(lens["detection"]["distortion"]["method"], "plumb-line");
+  const test::CommandRun measured = test::runCommand(photowalk + " measure " + (dir / "lens.json").string() + " 2>/dev/null");
+  ASSERT_EQ(measured.exitCode, 0) << measured.output;
+  const nlohmann::json m = nlohmann::json::parse(measured.output, nullptr, false);
+  EXPECT_EQ(m["camera"]["distortion"]["source"], "shot") << measured.output;
+
+  const test::CommandRun clean = test::runCommand(photowalk + " detect " + truth.image.string() + given + (dir / "plain.json").string());
+  ASSERT_EQ(clean.exitCode, 0) << clean.output;
+  EXPECT_EQ(clean.output.find("lens distortion"), std::string::npos) << clean.output;
+  const nlohmann::json plain = slurp(dir / "plain.json");
+  EXPECT_FALSE(plain.contains("distortion")) << plain.dump();
+  EXPECT_FALSE(plain["detection"].contains("distortion"));
+}
+
 // The EXIF focal length (issue 15 part 4): a JPEG of the ground truth whose EXIF gives
 // FocalLength with FocalPlaneXResolution, measured with no focal length in the shot nor
 // on the command line, and detected then measured the same way.
