@@ -270,9 +270,9 @@ Result<Measurement> measureThroughLens(const Shot& shot, const Intrinsics& k, co
   return m;
 }
 
-// The k1 whose lens brings the corners onto the box: golden sections of the RMS
-// residual over k1 in [-0.5, 0.3] (about the best of a coarse grid), then kept only
-// when the corners fit (MeasureOptions::distortionFromCorners).
+// The k1 whose lens brings the corners onto the box: the RMS residual minimised over
+// k1 in [-0.5, 0.3], then kept only when the corners fit
+// (MeasureOptions::distortionFromCorners).
 std::optional<Measurement> measureWithLensFromCorners(const Shot& shot, const Intrinsics& k, const MeasureOptions& options,
                                                       double rmsWithoutPx) {
   const auto measureAt = [&](double k1) -> std::optional<Measurement> {
@@ -283,28 +283,12 @@ std::optional<Measurement> measureWithLensFromCorners(const Shot& shot, const In
     return std::move(*m);
   };
   const auto rmsAt = [&](double k1) {
+    if (k1 == 0) return rmsWithoutPx;
     const auto m = measureAt(k1);
     return m ? m->reprojectionRmsPx : INFINITY;
   };
-  constexpr double kLow = -0.5, kHigh = 0.3;
-  constexpr int kGrid = 16;
-  double best = 0, bestRms = rmsWithoutPx;
-  for (int i = 0; i <= kGrid; ++i) {
-    const double k1 = kLow + (kHigh - kLow) * i / kGrid;
-    const double r = rmsAt(k1);
-    if (r < bestRms) best = k1, bestRms = r;
-  }
-  const double step = (kHigh - kLow) / kGrid, ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double lo = best - step, hi = best + step;
-  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo), f1 = rmsAt(x1), f2 = rmsAt(x2);
-  for (int it = 0; it < 30; ++it) {
-    if (f1 < f2) {
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = rmsAt(x1);
-    } else {
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + ratio * (hi - lo), f2 = rmsAt(x2);
-    }
-  }
-  auto m = measureAt(0.5 * (lo + hi));
+  const double k1 = minimizeOnInterval(rmsAt, -0.5, 0.3, 16, 30, 0.0);
+  auto m = measureAt(k1);
   if (!m || !(m->reprojectionRmsPx < kDistortionFittedPx) || !(m->reprojectionRmsPx < rmsWithoutPx / 6.0)) {
     return std::nullopt;
   }

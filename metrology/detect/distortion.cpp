@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "metrology/distortion.h"
+#include "metrology/least_squares.h"
 
 namespace pw::metrology::detect {
 namespace {
@@ -197,28 +198,10 @@ ChainCosts costs(const Intrinsics& lens, double k1, const std::vector<Normalised
   return c;
 }
 
-// The k1 in [kMinK1, kMaxK1] that makes the chains straightest: a grid, then golden
-// sections about its best step.
+// The k1 in [kMinK1, kMaxK1] that makes the chains straightest.
 double bestK1(const Intrinsics& lens, const std::vector<NormalisedChain>& chains) {
-  double best = 0, bestCost = costs(lens, 0.0, chains).total;
-  for (int i = 0; i <= kGridSteps; ++i) {
-    const double k = kMinK1 + (kMaxK1 - kMinK1) * i / kGridSteps;
-    const double c = costs(lens, k, chains).total;
-    if (c < bestCost) best = k, bestCost = c;
-  }
-  const double step = (kMaxK1 - kMinK1) / kGridSteps;
-  double lo = best - step, hi = best + step;
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  double f1 = costs(lens, x1, chains).total, f2 = costs(lens, x2, chains).total;
-  for (int it = 0; it < kGoldenSteps; ++it) {
-    if (f1 < f2) {
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - ratio * (hi - lo), f1 = costs(lens, x1, chains).total;
-    } else {
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + ratio * (hi - lo), f2 = costs(lens, x2, chains).total;
-    }
-  }
-  return 0.5 * (lo + hi);
+  return minimizeOnInterval([&](double k1) { return costs(lens, k1, chains).total; }, kMinK1, kMaxK1, kGridSteps,
+                            kGoldenSteps, 0.0);
 }
 
 size_t pointCount(const std::vector<NormalisedChain>& chains) {

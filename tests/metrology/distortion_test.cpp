@@ -1,6 +1,7 @@
 // Lens distortion (metrology/distortion.h): the model against OpenCV's own
 // projectPoints, measure through the lens on synthetic corridors with known answers,
 // and the rectifier sampling a distorted photo through it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "metrology/distortion.h"
+#include "metrology/least_squares.h"
 #include "metrology/measure.h"
 #include "metrology/rectify.h"
 #include "tests/metrology/synthetic_corridor.h"
@@ -53,6 +55,15 @@ TEST(Distortion, MatchesOpenCvsProjection) {
     EXPECT_NEAR(back->x, p.x, 1e-6);
     EXPECT_NEAR(back->y, p.y, 1e-6);
   }
+}
+
+TEST(Distortion, MinimizeOnIntervalFindsTheGlobalMinimum) {
+  // Two minima, the deeper at 0.123; undefined (infinite) below -0.4.
+  const auto f = [](double x) {
+    return x < -0.4 ? INFINITY : std::min((x - 0.123) * (x - 0.123), 0.01 + (x + 0.3) * (x + 0.3));
+  };
+  EXPECT_NEAR(minimizeOnInterval(f, -0.5, 0.3, 16, 40, 0.0), 0.123, 1e-6);
+  EXPECT_NEAR(minimizeOnInterval(f, -0.5, 0.3, 16, 40, -0.3), 0.123, 1e-6);
 }
 
 TEST(Distortion, NoneIsThePinholeExactly) {
