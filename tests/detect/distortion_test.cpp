@@ -31,7 +31,7 @@ struct Case {
   // except corridor_a's, where detection on the undistorted photo takes the far edge
   // of the floor's bottom boundaries (P3 P4 1.4 px, P5 P6 on the marked frame 3 px low:
   // the band's outer edge; the top corners are within 0.15 px and k1 within 0.013):
-  // measured -1.26 -0.47 -1.54% at k1 -0.1, -1.20 -0.47 -1.45% at -0.2.
+  // measured -1.26 -0.49 -1.56% at k1 -0.1, -1.27 -0.50 -1.53% at -0.2.
   double maxErrorPct = 0.5;
 };
 
