@@ -86,6 +86,36 @@ int main() {
   std::printf("  detectCorridor, 4000x3000 (12 MP)           %8.1f / %8.1f  (found: %s; target < 300 ms)\n", full.wallMs,
               full.cpuMs, found ? "yes" : "NO");
 
+  // The plumb-line fit (metrology/detect/distortion.h) runs on every photo: the same
+  // detection without it is its baseline.
+  DetectOptions pinholeOnly = options;
+  pinholeOnly.estimateDistortion = false;
+  const Timing withoutLens = median(9, [&] { (void)detectCorridor(big, pinholeOnly); });
+  std::printf("  baseline: the same without the lens fit      %8.1f / %8.1f  (the fit: %+.1f / %+.1f)\n", withoutLens.wallMs,
+              withoutLens.cpuMs, full.wallMs - withoutLens.wallMs, full.cpuMs - withoutLens.cpuMs);
+  // A 12 MP photo through a barrel lens (k1 -0.2): the fit finds it, and detection runs
+  // again on the photo undistorted.
+  cv::Mat mapX(big.size(), CV_32FC1), mapY(big.size(), CV_32FC1), distorted;
+  const double f = kFocalSmall * 5, cx = (big.cols - 1) * 0.5, cy = (big.rows - 1) * 0.5;
+  for (int y = 0; y < big.rows; ++y) {
+    for (int x = 0; x < big.cols; ++x) {
+      // The inverse of the lens by fixed-point iteration (what the photo shows at x, y).
+      const double xd = (x - cx) / f, yd = (y - cy) / f;
+      double xu = xd, yu = yd;
+      for (int i = 0; i < 20; ++i) {
+        const double factor = 1 - 0.2 * (xu * xu + yu * yu);
+        xu = xd / factor, yu = yd / factor;
+      }
+      mapX.at<float>(y, x) = static_cast<float>(cx + f * xu);
+      mapY.at<float>(y, x) = static_cast<float>(cy + f * yu);
+    }
+  }
+  cv::remap(big, distorted, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  bool lensFound = false;
+  const Timing throughLens = median(5, [&] { lensFound = !detectCorridor(distorted, options)->distortion.isNone(); });
+  std::printf("  detectCorridor, 12 MP through k1 -0.2        %8.1f / %8.1f  (lens found: %s)\n", throughLens.wallMs,
+              throughLens.cpuMs, lensFound ? "yes" : "NO");
+
   WorkingImage work;
   const Timing prepare = median(9, [&] { work = makeWorkingImage(big, DetectOptions{}.workingMaxSidePx); });
   std::printf("    stage: working copy %dx%d + gradients  %8.1f / %8.1f\n", work.bgr.cols, work.bgr.rows, prepare.wallMs,

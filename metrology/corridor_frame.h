@@ -21,6 +21,7 @@
 
 #include <glm/glm.hpp>
 
+#include "metrology/distortion.h"
 #include "metrology/shot.h"
 
 namespace pw::metrology {
@@ -33,6 +34,10 @@ namespace pw::metrology {
 struct Intrinsics {
   double focalPx = 0;
   glm::dvec2 principalPointPx{0.0};  // pixel centres at integer coordinates
+  // The lens's radial distortion (distortion.h). projectToPixel and rayThroughPixel
+  // are the pinhole's and ignore it: distortPixel / undistortPixel take a pinhole
+  // pixel to the photo's and back.
+  RadialDistortion distortion;
 };
 
 struct CameraPose {

@@ -106,4 +106,26 @@ Result<LeastSquaresResult> levenbergMarquardt(const ResidualFunction& f, std::ve
   return out;
 }
 
+double minimizeOnInterval(const std::function<double(double)>& f, double lo, double hi, int gridSteps, int goldenSteps,
+                          double start) {
+  double best = start, bestValue = f(start);
+  for (int i = 0; i <= gridSteps; ++i) {
+    const double x = lo + (hi - lo) * i / gridSteps;
+    const double v = f(x);
+    if (v < bestValue) best = x, bestValue = v;
+  }
+  const double step = (hi - lo) / gridSteps, ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = best - step, b = best + step;
+  double x1 = b - ratio * (b - a), x2 = a + ratio * (b - a), f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < goldenSteps; ++it) {
+    if (f1 < f2) {
+      b = x2, x2 = x1, f2 = f1, x1 = b - ratio * (b - a), f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2, x2 = a + ratio * (b - a), f2 = f(x2);
+    }
+  }
+  const double x = 0.5 * (a + b);
+  return f(x) <= bestValue ? x : best;
+}
+
 }  // namespace pw::metrology

@@ -43,4 +43,12 @@ Result<LeastSquaresResult> levenbergMarquardt(const ResidualFunction& f, std::ve
                                               const std::vector<double>& steps, int residualCount,
                                               const LeastSquaresOptions& options = {});
 
+// The x in [lo, hi] that minimises f of one variable: the best of `start` and
+// gridSteps + 1 evenly spaced samples, then golden-section search (Press et al.,
+// Numerical Recipes 10.2) within one grid step either side of it, `goldenSteps`
+// times (each narrows the bracket by 0.618). The grid keeps a function with several
+// minima from the wrong one; f may return infinity where it is undefined.
+double minimizeOnInterval(const std::function<double(double)>& f, double lo, double hi, int gridSteps, int goldenSteps,
+                          double start);
+
 }  // namespace pw::metrology

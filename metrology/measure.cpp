@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,15 @@
 namespace pw::metrology {
 
 const char* methodName(Method method) { return method == Method::kSeed ? "seed" : "general"; }
+
+const char* distortionSourceName(DistortionSource source) {
+  switch (source) {
+    case DistortionSource::kNone: return "none";
+    case DistortionSource::kShot: return "shot";
+    case DistortionSource::kCorners: return "corners";
+  }
+  return "?";
+}
 
 namespace {
 
@@ -91,19 +101,9 @@ bool allFinite(const Measurement& m) {
   return ok;
 }
 
-}  // namespace
-
-Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& options) {
-  PW_TRY(checkShot(shot));
-  if (!(options.cornerSigmaPx >= 0) || !std::isfinite(options.cornerSigmaPx)) {
-    return makeError("the corner standard deviation must be a number of pixels >= 0");
-  }
-  if (!(options.cameraHeightSigmaM >= 0) || !std::isfinite(options.cameraHeightSigmaM)) {
-    return makeError("the camera height's standard deviation must be a number of metres >= 0");
-  }
-  auto intrinsics = shotIntrinsics(shot);
-  if (!intrinsics) return intrinsics.error();
-  const Intrinsics k = *intrinsics;
+// The measurement of a pinhole shot: its corners where a camera without distortion
+// would show them, `k` without distortion.
+Result<Measurement> measurePinhole(const Shot& shot, const Intrinsics& k, const MeasureOptions& options) {
   auto vanishing = corridorVanishing(shot.cornersPx);
   if (!vanishing) return vanishing.error();
 
@@ -233,8 +233,94 @@ Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& opti
   return m;
 }
 
+// The shot's corners where the pinhole would show them.
+Result<std::array<glm::dvec2, kCornerCount>> pinholeCorners(const Shot& shot, const Intrinsics& k) {
+  std::array<glm::dvec2, kCornerCount> out{};
+  for (int i = 0; i < kCornerCount; ++i) {
+    const std::optional<glm::dvec2> p = undistortPixel(k, shot.cornersPx[i]);
+    if (!p) {
+      return makeError(std::string("corner ") + cornerName(i) + " lies where the distortion (" +
+                       distortionText(k.distortion) + ") does not invert");
+    }
+    out[i] = *p;
+  }
+  return out;
+}
+
+// Measures the shot through the lens `k`: the corners undistorted, the pinhole
+// measured, and the reprojection taken back into the photo through the lens.
+Result<Measurement> measureThroughLens(const Shot& shot, const Intrinsics& k, const MeasureOptions& options) {
+  if (k.distortion.isNone()) return measurePinhole(shot, k, options);
+  Shot pinhole = shot;
+  auto corners = pinholeCorners(shot, k);
+  if (!corners) return corners.error();
+  pinhole.cornersPx = *corners;
+  Intrinsics pinholeCamera = k;
+  pinholeCamera.distortion = {};
+  auto m = measurePinhole(pinhole, pinholeCamera, options);
+  if (!m) return m;
+  m->camera = k;
+  double sum = 0;
+  for (int i = 0; i < kCornerCount; ++i) {
+    m->reprojectedPx[i] = distortPixel(k, m->reprojectedPx[i]);
+    const glm::dvec2 d = m->reprojectedPx[i] - shot.cornersPx[i];
+    sum += glm::dot(d, d);
+  }
+  m->reprojectionRmsPx = std::sqrt(sum / kCornerCount);
+  return m;
+}
+
+// The k1 whose lens brings the corners onto the box: the RMS residual minimised over
+// k1 in [-0.5, 0.3], then kept only when the corners fit
+// (MeasureOptions::distortionFromCorners).
+std::optional<Measurement> measureWithLensFromCorners(const Shot& shot, const Intrinsics& k, const MeasureOptions& options,
+                                                      double rmsWithoutPx) {
+  const auto measureAt = [&](double k1) -> std::optional<Measurement> {
+    Intrinsics lens = k;
+    lens.distortion = {k1, 0.0};
+    auto m = measureThroughLens(shot, lens, options);
+    if (!m) return std::nullopt;
+    return std::move(*m);
+  };
+  const auto rmsAt = [&](double k1) {
+    if (k1 == 0) return rmsWithoutPx;
+    const auto m = measureAt(k1);
+    return m ? m->reprojectionRmsPx : INFINITY;
+  };
+  const double k1 = minimizeOnInterval(rmsAt, -0.5, 0.3, 16, 30, 0.0);
+  auto m = measureAt(k1);
+  if (!m || !(m->reprojectionRmsPx < kDistortionFittedPx) || !(m->reprojectionRmsPx < rmsWithoutPx / 6.0)) {
+    return std::nullopt;
+  }
+  m->distortionSource = DistortionSource::kCorners;
+  return m;
+}
+
+}  // namespace
+
+Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& options) {
+  PW_TRY(checkShot(shot));
+  if (!(options.cornerSigmaPx >= 0) || !std::isfinite(options.cornerSigmaPx)) {
+    return makeError("the corner standard deviation must be a number of pixels >= 0");
+  }
+  if (!(options.cameraHeightSigmaM >= 0) || !std::isfinite(options.cameraHeightSigmaM)) {
+    return makeError("the camera height's standard deviation must be a number of metres >= 0");
+  }
+  auto intrinsics = shotIntrinsics(shot);
+  if (!intrinsics) return intrinsics.error();
+  auto m = measureThroughLens(shot, *intrinsics, options);
+  if (!m) return m;
+  m->distortionSource = shot.distortion ? DistortionSource::kShot : DistortionSource::kNone;
+  if (!shot.distortion && options.distortionFromCorners && m->reprojectionRmsPx > kDistortionResidualPx) {
+    if (auto lens = measureWithLensFromCorners(shot, *intrinsics, options, m->reprojectionRmsPx)) return *lens;
+  }
+  return m;
+}
+
 glm::dvec3 projectWithMeasurement(const Measurement& m, const glm::dvec3& pointM) {
-  return projectToPixel(m.camera, m.pose, pointM);
+  const glm::dvec3 p = projectToPixel(m.camera, m.pose, pointM);
+  if (m.camera.distortion.isNone() || !(p.z > 0)) return p;
+  return glm::dvec3(distortPixel(m.camera, glm::dvec2(p)), p.z);
 }
 
 }  // namespace pw::metrology

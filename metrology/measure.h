@@ -30,7 +30,15 @@ struct MeasureOptions {
   double cornerSigmaPx = 1.0;
   // Standard deviation of the given camera height (m); 0 treats it as exact.
   double cameraHeightSigmaM = 0.0;
+  // When the shot gives no distortion and the corners miss the fitted box by more than
+  // kDistortionResidualPx (RMS), try a radial k1 (distortion.h) that the residual would
+  // come from; it is kept only when it brings the corners onto the box (RMS under a
+  // sixth of before, and under kDistortionFittedPx). Corners misplaced by hand do not
+  // fit a lens, so they keep their residual (and the editor's warning).
+  bool distortionFromCorners = true;
 };
+inline constexpr double kDistortionResidualPx = 0.5;
+inline constexpr double kDistortionFittedPx = 0.5;
 
 struct Dimensions {
   double widthM = 0;
@@ -56,33 +64,48 @@ struct ReferenceCheck {
   bool usedForScale = false; // true when the shot has no camera height
 };
 
+// Where the measurement's lens distortion (camera.distortion) came from.
+enum class DistortionSource {
+  kNone,     // the shot gives none and the corners show none: a pinhole
+  kShot,     // the shot's `distortion`
+  kCorners,  // estimated from the corners' residual (the shot gives none)
+};
+const char* distortionSourceName(DistortionSource source);
+
 struct Measurement {
   Method method = Method::kGeneral;
   Dimensions size;
   Dimensions sigma;  // one standard deviation, first order (uncertainty.h)
   double cornerSigmaPx = 1.0;
-  CorridorVanishing vanishing;  // from the corners as given
+  // From the corners as given, or where the pinhole would show them when the lens
+  // has distortion (then so are the horizon and the vanishing points).
+  CorridorVanishing vanishing;
   // The floor's vanishing line of the fitted camera (same sign convention as
   // CorridorVanishing::horizon).
   ImageLine horizon{0.0, 1.0, 0.0};
-  Intrinsics camera;
+  Intrinsics camera;  // with the lens's distortion
+  DistortionSource distortionSource = DistortionSource::kNone;
   double cameraHeightM = 0;  // given, or derived from the reference length
   CameraPose pose;           // the camera in the model frame
   PoseSigma poseSigma;
-  double reprojectionRmsPx = 0;  // RMS distance between the corners and the box's projection
+  // RMS distance between the corners and the box's projection (through the lens),
+  // photo pixels.
+  double reprojectionRmsPx = 0;
   std::array<glm::dvec3, kCornerCount> cornersM{};       // fitted, model frame
-  std::array<glm::dvec2, kCornerCount> reprojectedPx{};  // their projections
+  std::array<glm::dvec2, kCornerCount> reprojectedPx{};  // their projections, photo pixels
   std::optional<ReferenceCheck> reference;
   int iterations = 0;  // Levenberg-Marquardt iterations (general method)
 };
 
-// Checks the shot (shot_check.h), fits the vanishing geometry, then measures with
+// Checks the shot (shot_check.h), takes the corners through the lens's distortion to
+// where a pinhole would show them, fits the vanishing geometry, then measures with
 // the chosen method. The scale comes from the camera height when given (a reference
 // length is then only checked), else from the reference length. Every number in a
 // successful result is finite; failures are one line naming the problem.
 Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& options = {});
 
-// Pixel (u, v) of a model-frame point as the measured camera sees it.
+// Pixel (u, v) of a model-frame point as the measured camera sees it (through the
+// lens's distortion), and its depth (corridor_frame.h's projectToPixel).
 glm::dvec3 projectWithMeasurement(const Measurement& m, const glm::dvec3& pointM);
 
 }  // namespace pw::metrology

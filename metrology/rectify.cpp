@@ -26,10 +26,13 @@ bool insidePhoto(const glm::dvec2& p, cv::Size size) {
   return p.x >= -0.5 && p.y >= -0.5 && p.x <= size.width - 0.5 && p.y <= size.height - 0.5;
 }
 
-// True where the photo shows plane point p: in front of the camera and inside the photo.
-bool shows(const cv::Matx33d& h, const glm::dvec2& p, cv::Size size) {
+// True where the photo shows plane point p: in front of the camera and, through the
+// lens's distortion, inside the photo.
+bool shows(const cv::Matx33d& h, const glm::dvec2& p, cv::Size size, const Intrinsics& lens) {
   const cv::Vec3d q = h * cv::Vec3d(p.x, p.y, 1.0);
-  return q[2] > 0 && insidePhoto(glm::dvec2(q[0] / q[2], q[1] / q[2]), size);
+  if (!(q[2] > 0)) return false;
+  const glm::dvec2 pinhole(q[0] / q[2], q[1] / q[2]);
+  return insideFold(lens, pinhole) && insidePhoto(distortPixel(lens, pinhole), size);
 }
 
 // Photo pixels per texture pixel along the texture's x and y axes at p (the lengths
@@ -47,7 +50,24 @@ struct RowSpan {
   int count() const { return std::max(0, last - first + 1); }
 };
 
-std::vector<RowSpan> shownSpans(const cv::Matx33d& m, cv::Size texture, cv::Size photo) {
+// Through a distorting lens the photo's outline is curved on the plane: each row's
+// first and last shown texel, found texel by texel (a row is taken as one interval
+// between them).
+std::vector<RowSpan> shownSpansThroughLens(const cv::Matx33d& m, cv::Size texture, cv::Size photo, const Intrinsics& lens) {
+  std::vector<RowSpan> spans(texture.height);
+  cv::parallel_for_(cv::Range(0, texture.height), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      int first = 0, last = texture.width - 1;
+      while (first <= last && !shows(m, glm::dvec2(first, y), photo, lens)) ++first;
+      while (last >= first && !shows(m, glm::dvec2(last, y), photo, lens)) --last;
+      spans[y] = {first, last};
+    }
+  });
+  return spans;
+}
+
+std::vector<RowSpan> shownSpans(const cv::Matx33d& m, cv::Size texture, cv::Size photo, const Intrinsics& lens) {
+  if (!lens.distortion.isNone()) return shownSpansThroughLens(m, texture, photo, lens);
   std::vector<RowSpan> spans(texture.height);
   const double pw = photo.width - 0.5, ph = photo.height - 0.5;
   for (int y = 0; y < texture.height; ++y) {
@@ -114,14 +134,15 @@ struct Resolution {
   cv::Size size;
 };
 
+// (The density is the pinhole's: a lens's distortion changes it by a few percent.)
 Result<Resolution> resolutionFor(const cv::Matx33d& metric, double widthM, double heightM, cv::Size photoSize,
-                                 const RectifyOptions& options) {
+                                 const Intrinsics& lens, const RectifyOptions& options) {
   double bestAny = 0;
   glm::dvec2 bestAxes(0.0);
   for (int j = 0; j < kDensitySamples; ++j) {
     for (int i = 0; i < kDensitySamples; ++i) {
       const glm::dvec2 m(widthM * i / (kDensitySamples - 1), heightM * j / (kDensitySamples - 1));
-      if (!shows(metric, m, photoSize)) continue;
+      if (!shows(metric, m, photoSize, lens)) continue;
       const glm::dmat2 jacobian = homographyJacobian(metric, m);
       bestAny = std::max(bestAny, largestStretch(jacobian));
       bestAxes = glm::max(bestAxes, glm::dvec2(glm::length(jacobian[0]), glm::length(jacobian[1])));
@@ -155,7 +176,7 @@ Result<Resolution> resolutionFor(const cv::Matx33d& metric, double widthM, doubl
 // Plans one tile: the pyramid level and supersampling from the local shrink where the
 // photo shows the tile (elsewhere the photo has nothing to filter).
 Tile planTile(const cv::Rect& rect, const cv::Matx33d& photoFromTexture, const std::vector<RowSpan>& spans,
-              cv::Size photoSize, int deepest, double& maxShrink) {
+              cv::Size photoSize, const Intrinsics& lens, int deepest, double& maxShrink) {
   Tile t;
   t.rect = rect;
   const int x1 = rect.x + rect.width - 1, y1 = rect.y + rect.height - 1;
@@ -169,7 +190,7 @@ Tile planTile(const cv::Rect& rect, const cv::Matx33d& photoFromTexture, const s
   const double xa = rect.x - 0.5, ya = rect.y - 0.5, xb = xa + rect.width, yb = ya + rect.height;
   for (const glm::dvec2& p : {glm::dvec2(xa, ya), glm::dvec2(xb, ya), glm::dvec2(xa, yb), glm::dvec2(xb, yb),
                               glm::dvec2(0.5 * (xa + xb), 0.5 * (ya + yb))}) {
-    if (shows(photoFromTexture, p, photoSize)) points.push_back(p);
+    if (shows(photoFromTexture, p, photoSize, lens)) points.push_back(p);
   }
   double shrink = 0;
   glm::dvec2 axes(0.0);
@@ -232,9 +253,31 @@ cv::Scalar fillOutside(cv::Mat& image, const std::vector<RowSpan>& spans, bool f
   return mean;
 }
 
+// Samples `source` (a pyramid level, `levelFromPhoto` from photo pixels) at
+// levelFromPhoto(distort(pinholeFromTarget · (x, y, 1))) for each target pixel.
+void remapThroughLens(const cv::Mat& source, cv::Mat& target, cv::Size size, const cv::Matx33d& pinholeFromTarget,
+                      const cv::Matx33d& levelFromPhoto, const Intrinsics& lens, int interpolation) {
+  cv::Mat mapX(size, CV_32FC1), mapY(size, CV_32FC1);
+  for (int y = 0; y < size.height; ++y) {
+    float* mx = mapX.ptr<float>(y);
+    float* my = mapY.ptr<float>(y);
+    for (int x = 0; x < size.width; ++x) {
+      const cv::Vec3d q = pinholeFromTarget * cv::Vec3d(x, y, 1.0);
+      // Behind the camera or beyond the lens's fold: outside the photo (such texels are
+      // not shown, and filled).
+      const glm::dvec2 pinhole = q[2] > 0 ? glm::dvec2(q[0] / q[2], q[1] / q[2]) : glm::dvec2(0.0);
+      const glm::dvec2 d = q[2] > 0 && insideFold(lens, pinhole) ? distortPixel(lens, pinhole) : glm::dvec2(-1e6);
+      const cv::Vec3d l = levelFromPhoto * cv::Vec3d(d.x, d.y, 1.0);
+      mx[x] = static_cast<float>(l[0]);
+      my[x] = static_cast<float>(l[1]);
+    }
+  }
+  cv::remap(source, target, mapX, mapY, interpolation, cv::BORDER_REPLICATE);
+}
+
 }  // namespace
 
-PhotoPyramid::PhotoPyramid(const cv::Mat& photo) { levels_.push_back(photo); }
+PhotoPyramid::PhotoPyramid(const cv::Mat& photo, const Intrinsics& lens) : lens_(lens) { levels_.push_back(photo); }
 
 int PhotoPyramid::deepest() const {
   int level = 0;
@@ -267,7 +310,8 @@ Result<RectifiedPlane> rectifyPlane(PhotoPyramid& pyramid, const cv::Matx33d& me
     if (!std::isfinite(metric.val[i])) return makeError("the plane's homography is not finite");
   }
   const cv::Size photoSize = pyramid.photo().size();
-  auto resolution = resolutionFor(metric, widthM, heightM, photoSize, options);
+  const Intrinsics& lens = pyramid.lens();
+  auto resolution = resolutionFor(metric, widthM, heightM, photoSize, lens, options);
   if (!resolution) return resolution.error();
   const int widthPx = resolution->size.width, heightPx = resolution->size.height;
 
@@ -279,7 +323,7 @@ Result<RectifiedPlane> rectifyPlane(PhotoPyramid& pyramid, const cv::Matx33d& me
   // Texture pixel centre (i, j) sits at ((i + 0.5) W / widthPx, (j + 0.5) H / heightPx) metres.
   const double sx = widthM / widthPx, sy = heightM / heightPx;
   out.photoFromTexture = metric * cv::Matx33d(sx, 0, 0.5 * sx, 0, sy, 0.5 * sy, 0, 0, 1);
-  const std::vector<RowSpan> spans = shownSpans(out.photoFromTexture, resolution->size, photoSize);
+  const std::vector<RowSpan> spans = shownSpans(out.photoFromTexture, resolution->size, photoSize, lens);
   long shownTexels = 0;
   for (const RowSpan& s : spans) shownTexels += s.count();
   out.coverage = static_cast<double>(shownTexels) / (static_cast<double>(widthPx) * heightPx);
@@ -291,7 +335,7 @@ Result<RectifiedPlane> rectifyPlane(PhotoPyramid& pyramid, const cv::Matx33d& me
   for (int y0 = 0; y0 < heightPx; y0 += kTilePx) {
     for (int x0 = 0; x0 < widthPx; x0 += kTilePx) {
       const cv::Rect rect(x0, y0, std::min(kTilePx, widthPx - x0), std::min(kTilePx, heightPx - y0));
-      Tile t = planTile(rect, out.photoFromTexture, spans, photoSize, deepest, out.maxShrink);
+      Tile t = planTile(rect, out.photoFromTexture, spans, photoSize, lens, deepest, out.maxShrink);
       if (!t.shown && options.outside == OutsidePhoto::kMeanColor) continue;  // filled below
       levelNeeded = std::max(levelNeeded, t.level);
       tiles.push_back(t);
@@ -316,7 +360,17 @@ Result<RectifiedPlane> rectifyPlane(PhotoPyramid& pyramid, const cv::Matx33d& me
       const cv::Matx33d levelFromFine = levelFromPhoto * out.photoFromTexture * textureFromFine;
       const cv::Mat& source = levels[t.level];
       cv::Mat target = out.image(t.rect);
-      if (kx == 1 && ky == 1) {
+      if (!lens.distortion.isNone()) {
+        // The photo coordinate goes through the lens before it is sampled.
+        const cv::Matx33d pinholeFromFine = out.photoFromTexture * textureFromFine;
+        if (kx == 1 && ky == 1) {
+          remapThroughLens(source, target, t.rect.size(), pinholeFromFine, levelFromPhoto, lens, cv::INTER_CUBIC);
+        } else {
+          remapThroughLens(source, fine, cv::Size(t.rect.width * kx, t.rect.height * ky), pinholeFromFine, levelFromPhoto,
+                           lens, cv::INTER_LINEAR);
+          cv::resize(fine, target, t.rect.size(), 0, 0, cv::INTER_AREA);
+        }
+      } else if (kx == 1 && ky == 1) {
         cv::warpPerspective(source, target, cv::Mat(levelFromFine), t.rect.size(), cv::INTER_CUBIC | cv::WARP_INVERSE_MAP,
                             cv::BORDER_REPLICATE);
       } else {
@@ -383,7 +437,7 @@ std::array<glm::dvec3, 4> planeCornersM(Plane plane, const Dimensions& d) {
 Result<std::array<RectifiedPlane, kPlaneCount>> rectifyCorridor(const cv::Mat& photo, const Measurement& measurement,
                                                                 const RectifyOptions& options) {
   PW_TRY(checkPhoto(photo));
-  PhotoPyramid pyramid(photo);
+  PhotoPyramid pyramid(photo, measurement.camera);
   std::array<RectifiedPlane, kPlaneCount> out;
   for (int p = 0; p < kPlaneCount; ++p) {
     const Plane plane = static_cast<Plane>(p);

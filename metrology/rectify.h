@@ -79,22 +79,30 @@ struct RectifiedPlane {
 };
 
 // The photo and its Gaussian pyramid (OpenCV pyrDown), grown as planes need it: one
-// per photo when several planes are cut from it. Not for use by two threads at once.
+// per photo when several planes are cut from it; with the lens that took it, whose
+// distortion (corridor_frame.h's Intrinsics) every plane's pinhole pixel goes through
+// before the photo is sampled (none: the pinhole's pixel itself). Not for use by two
+// threads at once.
 class PhotoPyramid {
  public:
-  explicit PhotoPyramid(const cv::Mat& photo);
+  explicit PhotoPyramid(const cv::Mat& photo, const Intrinsics& lens = {});
   const cv::Mat& photo() const { return levels_.front(); }
+  const Intrinsics& lens() const { return lens_; }
   int deepest() const;  // the coarsest level there may be
   const cv::Mat& level(int i);  // i <= deepest()
 
  private:
   std::vector<cv::Mat> levels_;
+  Intrinsics lens_;
 };
 
 // Rectifies the plane whose point at metric coordinates (x, y) (metres from the
 // texture's top-left corner, x to the right along widthM, y down along heightM) lands
-// on the photo's homogeneous pixel photoFromPlane · (x, y, 1) = (u w, v w, w), w > 0 in
-// front of the camera (photoFromPlane() below gives it for a measured camera).
+// on the pinhole's homogeneous pixel photoFromPlane · (x, y, 1) = (u w, v w, w), w > 0 in
+// front of the camera (photoFromPlane() below gives it for a measured camera), and
+// through the pyramid's lens on the photo. photoFromTexture, coverage and the
+// resolution are the pinhole's (a lens's distortion changes the density by a few
+// percent; the photo's outline through it decides what is shown).
 // Resampling is bicubic (the renderer filters a texture once more, and two bilinear
 // steps in a row blur thin lines such as mortar and tile joints: 3.5-6 dB in the
 // reprojection test); where the texture shrinks the photo, each 64-px tile is filtered

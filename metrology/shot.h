@@ -12,6 +12,8 @@
 
 #include <glm/glm.hpp>
 
+#include "metrology/distortion.h"
+
 namespace pw::metrology {
 
 enum Corner : int { P1 = 0, P2, P3, P4, P5, P6, P7, P8 };
@@ -65,6 +67,10 @@ struct Shot {
   std::optional<double> cameraHeightM;
   std::array<glm::dvec2, kCornerCount> cornersPx{};
   std::optional<ReferenceLength> reference;
+  // The lens's radial distortion (distortion.h); the corners are where the photo shows
+  // them. Unset: not known (measure may estimate it from the corners, measure.h); set
+  // to zero: known to be none.
+  std::optional<RadialDistortion> distortion;
 
   glm::dvec2 principalPoint() const {
     return principalPointPx.value_or(glm::dvec2((imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5));

@@ -108,6 +108,8 @@ Result<Intrinsics> shotIntrinsics(const Shot& shot) {
   if (!std::isfinite(k.focalPx) || !(k.focalPx > 0)) return makeError("the focal length must be a positive number");
   k.principalPointPx = shot.principalPoint();
   if (!finite(k.principalPointPx)) return makeError("the principal point is not finite");
+  k.distortion = shot.distortion.value_or(RadialDistortion{});
+  PW_TRY(checkDistortion(k.distortion));
   return k;
 }
 

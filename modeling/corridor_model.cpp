@@ -253,7 +253,7 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
     model.untexturedNearM = std::max(model.photoNearM, cameraZ + (options.photoOnly ? kBehindCameraM : kClosedBehindCameraM));
     model.closed = !options.photoOnly;
   }
-  metrology::PhotoPyramid pyramid(photo);
+  metrology::PhotoPyramid pyramid(photo, measurement.camera);  // through the lens's distortion
   for (int s = 0; s < kFaces; ++s) {
     const Surface surface = static_cast<Surface>(s);
     const Panel panel = surfacePanel(surface, model.box, model.photoNearM);

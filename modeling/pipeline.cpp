@@ -1,6 +1,12 @@
 #include "modeling/pipeline.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <opencv2/imgproc.hpp>
+
+#include "metrology/distortion.h"
 
 #include "modeling/tour.h"
 
@@ -14,11 +20,64 @@ Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const me
   return MeasuredShot{std::move(*loaded), std::move(*measurement)};
 }
 
-Result<engine::Camera> shotCamera(const std::filesystem::path& path) {
+Result<engine::Camera> shotCamera(const std::filesystem::path& path, metrology::Intrinsics* lens) {
   auto measured = measureShotFile(path);
   if (!measured) return measured.error();
   const cv::Mat& photo = measured->loaded.image;
+  if (lens) *lens = measured->measurement.camera;
   return photoCamera(measured->measurement, photo.cols, photo.rows, glm::dmat4(1.0));
+}
+
+LensFrame lensFrame(const engine::Camera& photoCamera, const metrology::Intrinsics& lens, int photoWidth,
+                    int photoHeight) {
+  // The pinhole pixels of the photo's outline bound what the lens shows.
+  glm::dvec2 lo(0.0), hi(photoWidth - 1.0, photoHeight - 1.0);
+  constexpr int kSteps = 64;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double u = (photoWidth - 1.0) * i / kSteps, v = (photoHeight - 1.0) * i / kSteps;
+    for (const glm::dvec2 p : {glm::dvec2(u, 0), glm::dvec2(u, photoHeight - 1.0), glm::dvec2(0, v),
+                               glm::dvec2(photoWidth - 1.0, v)}) {
+      if (const std::optional<glm::dvec2> q = metrology::undistortPixel(lens, p)) {
+        lo = glm::min(lo, *q);
+        hi = glm::max(hi, *q);
+      }
+    }
+  }
+  LensFrame frame;
+  // Whole photo pixels, two to spare for the filter.
+  frame.offsetPx = glm::ceil(-lo) + 2.0;
+  const int s = frame.supersample;
+  frame.width = s * (static_cast<int>(std::ceil(hi.x + frame.offsetPx.x)) + 3);
+  frame.height = s * (static_cast<int>(std::ceil(hi.y + frame.offsetPx.y)) + 3);
+  // Photo pixel p (offset) is frame pixel s p + (s - 1) / 2: pixel centres at integers.
+  frame.camera = photoCamera;
+  engine::Intrinsics k = *photoCamera.intrinsics;
+  k.focalXPx *= s;
+  k.focalYPx *= s;
+  k.principalU = s * (k.principalU + frame.offsetPx.x) + 0.5 * (s - 1);
+  k.principalV = s * (k.principalV + frame.offsetPx.y) + 0.5 * (s - 1);
+  k.imageWidth = frame.width;
+  k.imageHeight = frame.height;
+  frame.camera.intrinsics = k;
+  return frame;
+}
+
+engine::Image distortFrame(const engine::Image& pinhole, const LensFrame& frame, const metrology::Intrinsics& lens,
+                           int photoWidth, int photoHeight) {
+  // The lens at the frame's resolution: s times the focal length, its principal point.
+  const int s = frame.supersample;
+  metrology::Intrinsics fine = lens;
+  fine.focalPx *= s;
+  fine.principalPointPx = static_cast<double>(s) * lens.principalPointPx + 0.5 * (s - 1);
+  cv::Mat mapX, mapY, samples;
+  metrology::distortionMaps(fine, cv::Size(s * photoWidth, s * photoHeight), static_cast<double>(s) * frame.offsetPx, mapX,
+                            mapY);
+  const cv::Mat source(pinhole.height, pinhole.width, CV_8UC4, const_cast<uint8_t*>(pinhole.rgba.data()));
+  cv::remap(source, samples, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0, 0, 0, 255));
+  engine::Image out = engine::makeImage(photoWidth, photoHeight);
+  cv::Mat target(photoHeight, photoWidth, CV_8UC4, out.rgba.data());
+  cv::resize(samples, target, target.size(), 0, 0, cv::INTER_AREA);
+  return out;
 }
 
 Result<BuiltModel> buildModel(const modeling::Layout& layout, const modeling::ModelOptions& options,

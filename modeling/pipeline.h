@@ -24,8 +24,30 @@ Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const me
 
 // The camera that took the shot's photo, measured, placed as `build` places a first
 // corridor (photoCamera): the model's "Photo" viewpoint when it is built from this shot.
-// Its intrinsics are for the photo's size.
-Result<engine::Camera> shotCamera(const std::filesystem::path& path);
+// Its intrinsics are for the photo's size; `lens` (may be null) receives the measured
+// lens, its distortion included (none for a pinhole photo).
+Result<engine::Camera> shotCamera(const std::filesystem::path& path, metrology::Intrinsics* lens = nullptr);
+
+// A photo's frame through a distorting lens, drawn by a pinhole renderer: the pinhole
+// frame to render (`camera`, photoCamera's at `supersample` times the photo's
+// resolution with the principal point moved by `offsetPx` photo pixels, in a `width` x
+// `height` frame large enough for everything the lens squeezes into the photo), then
+// distortFrame takes it through the lens. Supersampled, each photo pixel averages
+// supersample² lens samples instead of resampling the frame once more (the ground
+// truth through k1 -0.2, PSNR against the photo: 39.4 instead of 36.8 dB for
+// corridor_h, 34.9 instead of 32.7 for f, 37.9 instead of 38.7 for a's bricks).
+struct LensFrame {
+  engine::Camera camera;
+  glm::dvec2 offsetPx{0.0};
+  int width = 0, height = 0;
+  int supersample = 2;
+};
+LensFrame lensFrame(const engine::Camera& photoCamera, const metrology::Intrinsics& lens, int photoWidth,
+                    int photoHeight);
+// The pinhole frame rendered for `frame` as the lens shows it, photoWidth x photoHeight
+// (bilinear samples, averaged; a pixel the lens does not reach is black).
+engine::Image distortFrame(const engine::Image& pinhole, const LensFrame& frame, const metrology::Intrinsics& lens,
+                           int photoWidth, int photoHeight);
 
 struct BuiltModel {
   Layout layout;

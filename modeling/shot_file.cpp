@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
+#include "modeling/exif.h"
 
 namespace pw::modeling {
 namespace fs = std::filesystem;
@@ -89,12 +90,44 @@ class StderrCapture {
   int saved_ = -1;
 };
 
+// The focal length of a loaded shot (its photo decoded, oriented as shown): the one
+// given, else the shot's, else the photo's EXIF; and where it came from.
+Status fillFocal(const fs::path& path, std::optional<double> givenPx, LoadedShot& loaded) {
+  metrology::Shot& s = loaded.shot;
+  const bool inShot = s.focalPx > 0 || s.focalMm.has_value();
+  if (givenPx) {
+    s.focalPx = *givenPx;
+    s.focalMm.reset();
+    loaded.focalSource = "given";
+    return {};
+  }
+  if (inShot) {
+    const auto source = loaded.otherFields.find("focal_source");
+    loaded.focalSource = source != loaded.otherFields.end() && source->is_string() ? source->get<std::string>() : "shot";
+    return {};
+  }
+  // The decoded photo is oriented as shown; the EXIF's sizes are the stored image's.
+  const ExifTags tags = readExif(s.imagePath);
+  const bool swap = orientationSwapsAxes(tags.orientation);
+  std::vector<std::string> notes;
+  const std::optional<ExifFocal> exif = exifFocal(tags, swap ? loaded.image.rows : loaded.image.cols,
+                                                  swap ? loaded.image.cols : loaded.image.rows, &notes);
+  if (!exif) {
+    return makeError(path.string() + ": missing field \"focal_px\" (or \"focal_mm\" with \"sensor_width_mm\"), and the photo " +
+                     s.imagePath + " has no EXIF focal length" + (notes.empty() ? "" : " (" + notes.front() + ")"));
+  }
+  s.focalPx = exif->focalPx;
+  s.focalMm = exif->focalMm;
+  loaded.focalSource = exif->source;
+  return {};
+}
+
 }  // namespace
 
 // The fields readShotFile reads and writeShotFile writes.
 constexpr const char* kShotFields[] = {"image",           "image_size",      "focal_px",  "focal_mm",
                                        "sensor_width_mm", "principal_point", "camera_height_m", "corners_px",
-                                       "reference"};
+                                       "reference",       "distortion"};
 
 Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
   const std::string where = path.string();
@@ -132,9 +165,7 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
     if (!sensor) return sensor.error();
     if (*mm <= 0 || *sensor <= 0) return makeError(where + ": focal_mm and sensor_width_mm must be positive");
     shot.focalMm = metrology::FocalLengthMm{*mm, *sensor};
-  } else {
-    return makeError(where + ": missing field \"focal_px\" (or \"focal_mm\" with \"sensor_width_mm\")");
-  }
+  }  // else: none (loadShot takes it from the photo's EXIF or the command line)
 
   if (doc.contains("principal_point")) {
     auto pp = point(doc["principal_point"], "principal_point", where);
@@ -180,6 +211,30 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
     reference.lengthM = *length;
     shot.reference = reference;
   }
+  if (doc.contains("distortion")) {
+    const json& lens = doc["distortion"];
+    const std::string form = "distortion must be {\"k1\": K1, \"k2\": K2} (OpenCV's radial model, focal-normalised)";
+    if (!lens.is_object()) return makeError(where + ": " + form + ", not " + lens.dump());
+    metrology::RadialDistortion d;
+    for (const auto& [key, value] : lens.items()) {
+      if (key != "k1" && key != "k2") return makeError(where + ": " + form + "; \"" + key + "\" is not one of them");
+    }
+    if (lens.contains("k1")) {
+      auto k1 = number(lens, "k1", where + ": distortion");
+      if (!k1) return k1.error();
+      d.k1 = *k1;
+    }
+    if (lens.contains("k2")) {
+      auto k2 = number(lens, "k2", where + ": distortion");
+      if (!k2) return k2.error();
+      d.k2 = *k2;
+    }
+    if (std::abs(d.k1) > 2 || std::abs(d.k2) > 2) {
+      return makeError(where + ": distortion k1 and k2 must lie within -2..2 (focal-normalised), not " +
+                       metrology::distortionText(d));
+    }
+    shot.distortion = d;
+  }
   if (doc.contains("image_size")) {
     const json& size = doc["image_size"];
     if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
@@ -200,11 +255,11 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
   return shot;
 }
 
-Result<LoadedShot> loadShot(const fs::path& path) {
+Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx) {
   json otherFields;
   auto shot = readShotFile(path, &otherFields);
   if (!shot) return shot.error();
-  LoadedShot loaded{std::move(*shot), {}, std::move(otherFields)};
+  LoadedShot loaded{std::move(*shot), {}, std::move(otherFields), {}};
   metrology::Shot& s = loaded.shot;
   std::error_code ec;
   if (!fs::exists(s.imagePath, ec)) return makeError(path.string() + ": image " + s.imagePath + " does not exist");
@@ -232,6 +287,7 @@ Result<LoadedShot> loadShot(const fs::path& path) {
   }
   s.imageWidth = loaded.image.cols;
   s.imageHeight = loaded.image.rows;
+  PW_TRY(fillFocal(path, focalPx, loaded));
   if (s.focalMm) s.focalPx = s.focalMm->pixels(s.imageWidth);
   for (int i = 0; i < kCornerCount; ++i) {
     const glm::dvec2 p = s.cornersPx[i];
@@ -268,6 +324,7 @@ Status writeShotFile(const fs::path& path, const metrology::Shot& shot, const js
                         {"to", metrology::cornerName(shot.reference->to)},
                         {"length_m", shot.reference->lengthM}};
   }
+  if (shot.distortion) doc["distortion"] = {{"k1", shot.distortion->k1}, {"k2", shot.distortion->k2}};
   return writeFileAtomic(path, doc.dump(1) + "\n");
 }
 
@@ -301,7 +358,7 @@ bool allFinite(const ordered_json& j) {
 
 }  // namespace
 
-Result<std::string> measurementJson(const metrology::Measurement& m) {
+Result<std::string> measurementJson(const metrology::Measurement& m, const std::string& focalSource) {
   using namespace metrology;
   ordered_json out;
   out["method"] = methodName(m.method);
@@ -333,6 +390,12 @@ Result<std::string> measurementJson(const metrology::Measurement& m) {
                  {"roll_deg", m.poseSigma.rollDeg},
                  {"position_m", vec(m.poseSigma.positionM)}}},
   };
+  if (!focalSource.empty()) out["camera"]["focal_source"] = focalSource;
+  if (m.distortionSource != DistortionSource::kNone) {
+    out["camera"]["distortion"] = {{"k1", m.camera.distortion.k1},
+                                   {"k2", m.camera.distortion.k2},
+                                   {"source", distortionSourceName(m.distortionSource)}};
+  }
   out["reprojection_rms_px"] = m.reprojectionRmsPx;
   ordered_json corners = ordered_json::object(), reprojected = ordered_json::object();
   for (int i = 0; i < kCornerCount; ++i) {

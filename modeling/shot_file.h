@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core/mat.hpp>
@@ -16,18 +18,26 @@ namespace pw::modeling {
 
 // Parses the shot file and checks every number is present, finite and sensible.
 // Does not open the image; `shot.imagePath` is resolved against the file's folder.
+// A shot without a focal length comes back with focalPx 0 and no focalMm (loadShot
+// takes it from the photo's EXIF).
 // `otherFields` (may be null) receives the fields photowalk does not read (a JSON
 // object), so that a shot written back keeps them.
 Result<metrology::Shot> readShotFile(const std::filesystem::path& path, nlohmann::json* otherFields = nullptr);
 
 // Reads the shot file and its image (BGR, 8 bit), filling imageWidth/imageHeight and
-// checking the corners against the image size.
+// checking the corners against the image size. The focal length is `focalPx` when
+// given (the command line's), else the shot's, else the photo's EXIF (exif.h's
+// exifFocal: FocalLength with FocalPlaneXResolution, or FocalLengthIn35mmFilm); with
+// none of them it is an error.
 struct LoadedShot {
   metrology::Shot shot;
   cv::Mat image;
   nlohmann::json otherFields = nlohmann::json::object();  // as readShotFile gives them
+  // Where the focal length came from: "given", the shot's own `focal_source` (or
+  // "shot" when it has none), or the EXIF's line ("EXIF FocalLength 4.20 mm with ...").
+  std::string focalSource;
 };
-Result<LoadedShot> loadShot(const std::filesystem::path& path);
+Result<LoadedShot> loadShot(const std::filesystem::path& path, std::optional<double> focalPx = std::nullopt);
 
 // Writes a shot file atomically: `otherFields` (a JSON object, e.g. LoadedShot's) and
 // the shot's own fields, which replace any of the same name. The image path is
@@ -39,8 +49,9 @@ Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& s
 // The measurement as one JSON object (what `photowalk measure` prints): width_m,
 // height_m, length_m, sigma_m {...}, vanishing_point_px, camera {height_m, focal_px,
 // yaw_deg, pitch_deg, roll_deg, position_m, world_from_camera, sigma}, horizon,
-// reprojection_rms_px, corners_m, reprojected_px, reference (when given). Fails
-// rather than print a NaN or infinity.
-Result<std::string> measurementJson(const metrology::Measurement& measurement);
+// reprojection_rms_px, corners_m, reprojected_px, reference (when given); the camera's
+// focal_source when `focalSource` is not empty (LoadedShot's), its distortion {k1, k2,
+// source} when it has one. Fails rather than print a NaN or infinity.
+Result<std::string> measurementJson(const metrology::Measurement& measurement, const std::string& focalSource = "");
 
 }  // namespace pw::modeling

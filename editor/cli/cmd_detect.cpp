@@ -27,7 +27,10 @@ constexpr const char* kUsage =
     "four receding floor and ceiling edges, the far wall's corners P1..P4 and the near\n"
     "corners P5..P8, each refined to sub-pixel precision on the image's edges, and\n"
     "writes a shot file ready for measure, build and the editor, with a \"detection\"\n"
-    "object giving each vanishing point's and each corner's confidence (0..1).\n\n"
+    "object giving each vanishing point's and each corner's confidence (0..1). A lens\n"
+    "that bends the photo's straight lines is fitted to them (the plumb-line method) and\n"
+    "written as the shot's distortion {k1, k2}; detection then runs on the photo\n"
+    "undistorted and the corners are the photo's own pixels.\n\n"
     "  -o, --output SHOT.json  the shot file to write (the image path in it is relative)\n"
     "  --focal-px F            focal length in pixels; without it, the photo's EXIF gives\n"
     "                          it (FocalLength with FocalPlaneXResolution, or\n"
@@ -82,6 +85,9 @@ json detectionJson(const CorridorDetection& d) {
   j["warnings"] = d.warnings;
   j["confident"] = d.confident;
   j["doubts"] = d.doubts;
+  if (!d.distortion.isNone()) {
+    j["distortion"] = {{"method", "plumb-line"}, {"lines", d.plumbLineCount}};
+  }
   return j;
 }
 
@@ -155,6 +161,7 @@ int runDetect(Args& args) {
   const std::string focalSource = exifFocal ? exifFocal->source : metrology::detect::focalSourceName(detection->focalSource);
   shot.principalPointPx = detection->principalPointPx;
   shot.cameraHeightM = cameraHeightM;
+  if (!detection->distortion.isNone()) shot.distortion = detection->distortion;
   for (int k = 0; k < metrology::kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
   json report = detectionJson(*detection);
   if (exifFocal) report["focal_source"] = "exif";
@@ -178,6 +185,10 @@ int runDetect(Args& args) {
   const glm::dvec2 vp = detection->corridor.pixel();
   std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,
               detection->corridor.confidence, detection->focalPx, focalSource.c_str());
+  if (!detection->distortion.isNone()) {
+    std::printf("lens distortion k1 %.4f (from %d straight lines); the corners are the photo's\n",
+                detection->distortion.k1, detection->plumbLineCount);
+  }
   for (int k = 0; k < metrology::kCornerCount; ++k) {
     const auto& c = detection->corners[k];
     std::printf("  %s (%8.2f, %8.2f)  confidence %.2f\n", metrology::cornerName(k), c.px.x, c.px.y, c.confidence);

@@ -15,16 +15,22 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: photowalk measure SHOT.json [--method general|seed] [--sigma-px S] [--sigma-height-m S]\n"
-    "                         [--sheet OUT.png]\n\n"
+    "                         [--focal-px F] [--sheet OUT.png]\n\n"
     "Measures the corridor's true width, height and length from the shot's photo, focal\n"
     "length, camera height (or reference length) and eight corners, and prints one JSON\n"
     "object: width_m, height_m, length_m, sigma_m, vanishing_point_px, camera {height_m,\n"
     "focal_px, yaw_deg, pitch_deg, roll_deg, position_m, world_from_camera},\n"
-    "reprojection_rms_px, corners_m (model frame) and more.\n\n"
+    "reprojection_rms_px, corners_m (model frame) and more. The focal length is\n"
+    "--focal-px's, else the shot's, else the photo's EXIF (FocalLength with\n"
+    "FocalPlaneXResolution, or FocalLengthIn35mmFilm); camera.focal_source says which.\n"
+    "A shot's distortion {k1, k2} (OpenCV's radial model) is taken out of the corners\n"
+    "first; without one, a distortion the corners' residual shows clearly is estimated\n"
+    "(camera.distortion, with its source).\n\n"
     "  --method general   camera with full rotation, box fitted to all eight corners (default)\n"
     "  --method seed      the seed paper's one-point-perspective construction\n"
     "  --sigma-px S       standard deviation of each corner, pixels (default 1)\n"
     "  --sigma-height-m S standard deviation of the camera height, metres (default 0)\n"
+    "  --focal-px F       focal length in pixels, instead of the shot's or the EXIF's\n"
     "  --sheet OUT.png    also draw a measurement sheet: the photo with the corners, the\n"
     "                     receding edges to the vanishing point, the horizon and each\n"
     "                     dimension written on its edge\n";
@@ -54,17 +60,26 @@ Result<metrology::MeasureOptions> parseMeasureOptions(Args& args) {
 int runMeasure(Args& args) {
   auto options = parseMeasureOptions(args);
   const std::optional<std::string> sheetPath = args.value("--sheet");
+  const std::optional<std::string> focalText = args.value("--focal-px");
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (!options) return fail(options.message());
   if (positionals.size() != 1) return fail("measure takes one shot file; see photowalk measure --help");
   const std::string& shotPath = positionals[0];
 
-  auto loaded = modeling::loadShot(shotPath);
+  std::optional<double> focalPx;
+  if (focalText) {
+    auto f = parseNumber(*focalText, "--focal-px");
+    if (!f) return fail(f.message());
+    if (!(*f > 0)) return fail("--focal-px must be positive");
+    focalPx = *f;
+  }
+
+  auto loaded = modeling::loadShot(shotPath, focalPx);
   if (!loaded) return fail(loaded.message());
   auto measurement = metrology::measureCorridor(loaded->shot, *options);
   if (!measurement) return fail(shotPath + ": " + measurement.message());
-  auto text = modeling::measurementJson(*measurement);
+  auto text = modeling::measurementJson(*measurement, loaded->focalSource);
   if (!text) return fail(shotPath + ": " + text.message());
 
   if (sheetPath) {

@@ -27,7 +27,8 @@ constexpr const char* kUsage =
     "                        frame lines up with the photo pixel for pixel when SCENE was\n"
     "                        built from that shot (its first corridor), as its Photo\n"
     "                        viewpoint does; with --size, the photo scaled to the frame's\n"
-    "                        smaller side about its centre\n"
+    "                        smaller side about its centre; a shot whose lens has\n"
+    "                        distortion is drawn through it (the photo's size only)\n"
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "                        (as PW_DEVICE=cpu)\n"
     "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n\n"
@@ -64,13 +65,17 @@ int runRender(Args& args) {
   if (!scene) return fail(scene.message());
   if (viewpointText && cameraFrom) return fail("give --viewpoint or --camera-from, not both");
   engine::Camera camera;
+  metrology::Intrinsics lens;
   if (cameraFrom) {
     // The shot's measured camera, as `build` makes the Photo viewpoint of a model built
     // from it; at another --size the renderer fits the photo's lens to the frame.
-    auto shotCamera = modeling::shotCamera(*cameraFrom);
+    auto shotCamera = modeling::shotCamera(*cameraFrom, &lens);
     if (!shotCamera) return fail(shotCamera.message());
     camera = *shotCamera;
     if (!sizeText) size = {camera.intrinsics->imageWidth, camera.intrinsics->imageHeight};
+    if (!lens.distortion.isNone() && sizeText) {
+      return fail("--size: the shot's lens has distortion; its camera is drawn at the photo's own size only");
+    }
   } else {
     const size_t count = scene->viewpoints.size();
     size_t index = 0;
@@ -101,7 +106,15 @@ int runRender(Args& args) {
   if (!renderer) return fail(renderer.message());
   for (const std::string& note : (*renderer)->notes()) std::fprintf(stderr, "note: %s\n", note.c_str());
   if (auto uploaded = (*renderer)->setScene(*scene); !uploaded) return fail(uploaded.message());
-  auto image = (*renderer)->renderToImage(camera, size.first, size.second);
+  Result<engine::Image> image = engine::Image{};
+  if (!lens.distortion.isNone()) {
+    // A pinhole frame large enough for the whole photo, then through the lens.
+    const modeling::LensFrame frame = modeling::lensFrame(camera, lens, size.first, size.second);
+    image = (*renderer)->renderToImage(frame.camera, frame.width, frame.height);
+    if (image) image = modeling::distortFrame(*image, frame, lens, size.first, size.second);
+  } else {
+    image = (*renderer)->renderToImage(camera, size.first, size.second);
+  }
   if (!image) return fail(image.message());
   // A frame drawn while the layers objected is not trusted: nothing is written.
   if (auto clean = (*renderer)->validationStatus(); !clean) return fail(clean.message());

@@ -146,6 +146,12 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     }
     doc.notes_.push_back("corners detected automatically (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) +
                          "): check each one, the lowest first");
+    if (!detection->distortion.isNone()) {
+      shot.distortion = detection->distortion;
+      doc.notes_.push_back("lens distortion k1 " + fixed(detection->distortion.k1, 3) + " found from " +
+                           std::to_string(detection->plumbLineCount) + " straight lines: the edges are drawn curved, as "
+                           "the lens shows them");
+    }
     for (const std::string& warning : detection->warnings) doc.notes_.push_back("detection: " + warning);
     for (const std::string& doubt : detection->doubts) doc.notes_.push_back("detection unsure: " + doubt);
   } else {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "metrology/distortion.h"
+
 namespace pw::edit {
 namespace {
 
@@ -49,6 +51,37 @@ void textWithShadow(ImDrawList* list, const glm::dvec2& at, ImU32 col, const cha
   list->AddText(im(at), col, text);
 }
 
+// A straight edge of the corridor from photo pixel a to b as the lens shows it: a
+// straight line for a pinhole, else a polyline through the distortion (the edge is
+// straight between the two corners' pinhole pixels).
+void edgeThroughLens(ImDrawList* list, const Canvas& canvas, const metrology::Intrinsics& lens, const glm::dvec2& a,
+                     const glm::dvec2& b, ImU32 col, float thickness, bool pinholeEnds = false) {
+  if (lens.distortion.isNone()) {
+    list->AddLine(im(canvas.toWindow(a)), im(canvas.toWindow(b)), col, thickness);
+    return;
+  }
+  const std::optional<glm::dvec2> pa = pinholeEnds ? std::optional(a) : metrology::undistortPixel(lens, a);
+  const std::optional<glm::dvec2> pb = pinholeEnds ? std::optional(b) : metrology::undistortPixel(lens, b);
+  if (!pa || !pb) return;
+  constexpr int kSteps = 32;
+  std::array<ImVec2, kSteps + 1> points;
+  for (int i = 0; i <= kSteps; ++i) {
+    const glm::dvec2 p = *pa + (*pb - *pa) * (static_cast<double>(i) / kSteps);
+    if (!metrology::insideFold(lens, p)) return;
+    points[i] = im(canvas.toWindow(metrology::distortPixel(lens, p)));
+  }
+  list->AddPolyline(points.data(), kSteps + 1, col, 0, thickness);
+}
+
+// The shot's lens (its distortion none without one, or without a focal length).
+metrology::Intrinsics lensOf(const metrology::Shot& shot) {
+  metrology::Intrinsics lens;
+  lens.focalPx = shot.focalPx;
+  lens.principalPointPx = shot.principalPoint();
+  if (shot.distortion && shot.focalPx > 0) lens.distortion = *shot.distortion;
+  return lens;
+}
+
 // The colour an edge of the box is drawn in: the far wall's, the receding edges', a
 // near edge's role, the walls' grey for a near vertical.
 glm::u8vec4 edgeColour(int a, int b) {
@@ -86,8 +119,9 @@ void drawHorizon(ImDrawList* list, const Canvas& canvas, const metrology::ImageL
 void drawFittedBox(ImDrawList* list, const Canvas& canvas, const metrology::Measurement& m) {
   const ImU32 col = withAlpha(kFittedColour, 110);
   const auto w = [&](int k) { return im(canvas.toWindow(m.reprojectedPx[k])); };
-  for (const auto& [a, b] : kReceding) list->AddLine(w(a), w(b), col, 1.0f);
-  for (const Edge& e : kCrossEdges) list->AddLine(w(e.a), w(e.b), col, 1.0f);
+  const auto edge = [&](int a, int b) { edgeThroughLens(list, canvas, m.camera, m.reprojectedPx[a], m.reprojectedPx[b], col, 1.0f); };
+  for (const auto& [a, b] : kReceding) edge(a, b);
+  for (const Edge& e : kCrossEdges) edge(e.a, e.b);
   for (int k = 0; k < metrology::kCornerCount; ++k) {
     const ImVec2 p = w(k);
     list->AddLine({p.x - 3, p.y - 3}, {p.x + 4, p.y + 4}, col, 1.0f);
@@ -140,20 +174,29 @@ void drawOverlay(ImDrawList* list, const OverlayInput& in) {
   if (in.measurement) drawHorizon(list, canvas, in.measurement->horizon);
   else if (in.vanishing) drawHorizon(list, canvas, in.vanishing->horizon);
 
-  // The receding edges, and beyond the far corners on to the vanishing point.
-  const metrology::VanishingPoint* vp = in.vanishing ? &in.vanishing->corridor : nullptr;
+  // The receding edges, and beyond the far corners on to the vanishing point. Through a
+  // distorting lens the edges are curves in the photo (straight in the world), and the
+  // vanishing point is the measurement's, in the undistorted image.
+  const metrology::Intrinsics lens = lensOf(shot);
+  const bool distorted = !lens.distortion.isNone();
+  const metrology::VanishingPoint* vp =
+      distorted ? (in.measurement ? &in.measurement->vanishing.corridor : nullptr) : (in.vanishing ? &in.vanishing->corridor : nullptr);
   for (const auto& [nearCorner, farCorner] : kReceding) {
-    list->AddLine(im(w(nearCorner)), im(w(farCorner)), colour(kRecedingColour), 2.0f);
-    if (vp && vp->finite) {
+    edgeThroughLens(list, canvas, lens, shot.cornersPx[nearCorner], shot.cornersPx[farCorner], colour(kRecedingColour), 2.0f);
+    if (vp && vp->finite && !distorted) {
       list->AddLine(im(w(farCorner)), im(canvas.toWindow(vp->px)), withAlpha(kRecedingColour, 150), 1.0f);
+    } else if (vp && vp->finite) {
+      if (const auto far = metrology::undistortPixel(lens, shot.cornersPx[farCorner])) {
+        edgeThroughLens(list, canvas, lens, *far, vp->px, withAlpha(kRecedingColour, 150), 1.0f, true);
+      }
     }
   }
   if (vp && vp->finite) {
-    const glm::dvec2 p = canvas.toWindow(vp->px);
+    const glm::dvec2 p = canvas.toWindow(distorted ? metrology::distortPixel(lens, vp->px) : vp->px);
     list->AddCircle(im(p), 5.0f, colour(kRecedingColour), 16, 1.5f);
   }
   for (const Edge& e : kCrossEdges) {
-    list->AddLine(im(w(e.a)), im(w(e.b)), colour(edgeColour(e.a, e.b)), 2.0f);
+    edgeThroughLens(list, canvas, lens, shot.cornersPx[e.a], shot.cornersPx[e.b], colour(edgeColour(e.a, e.b)), 2.0f);
   }
   if (in.measurement) drawFittedBox(list, canvas, *in.measurement);
 

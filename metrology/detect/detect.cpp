@@ -5,6 +5,7 @@
 
 #include "metrology/detect/boundaries.h"
 #include "metrology/detect/cross_sections.h"
+#include "metrology/detect/distortion.h"
 #include "metrology/detect/geometry.h"
 #include "metrology/detect/line_segments.h"
 #include "metrology/detect/refine.h"
@@ -313,6 +314,10 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   const WorkingImage work = makeWorkingImage(photo, std::max(kMinPhotoSidePx, options.workingMaxSidePx));
   const std::vector<LineSegment> segments = detectLineSegments(work.gray, work.scale, kMinSegmentLengthOfDiagonal * diagonal);
   d.segmentCount = static_cast<int>(segments.size());
+  if (options.estimateDistortion) {
+    const double focalPx = options.focalPx.value_or(kDefaultFocalOverLongSide * std::max(size.width, size.height));
+    if (auto lens = fitPlumbLines(work, segments, pp, focalPx)) return detectThroughLens(photo, options, *lens);
+  }
 
   // Vanishing points, and the focal length when it is not given.
   d.focalSource = options.focalPx ? FocalSource::kGiven : FocalSource::kDefault;

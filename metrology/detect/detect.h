@@ -31,6 +31,7 @@
 
 #include "base/result.h"
 #include "metrology/detect/vanishing_points.h"
+#include "metrology/distortion.h"
 
 namespace pw::metrology::detect {
 
@@ -41,6 +42,9 @@ struct DetectOptions {
   // P5..P8 at the nearest depth where all four stay inside the image, even when a
   // marked cross-section (a band or frame across the corridor) is found.
   bool nearAtImageEdge = false;
+  // Fit the lens's radial distortion to the photo's straight lines (distortion.h) and,
+  // when they show one, detect on the photo undistorted.
+  bool estimateDistortion = true;
 };
 
 enum class FocalSource { kGiven, kVanishingPoints, kDefault };
@@ -76,6 +80,11 @@ struct CorridorDetection {
   std::vector<std::string> doubts;
   std::vector<std::string> warnings;
   int segmentCount = 0;
+  // The lens's radial distortion found from the photo's straight lines (normalised by
+  // focalPx); none: a pinhole photo. The corners are the photo's pixels, the vanishing
+  // points the undistorted image's.
+  RadialDistortion distortion;
+  int plumbLineCount = 0;  // the straight lines it was fitted to
 };
 
 // Finds the corridor in `photoBgr` (CV_8UC3, any size). The error is for input a

@@ -82,6 +82,44 @@ TEST_F(ShotFile, ErrorsNameTheProblem) {
   expectError(replaced(shot(), "\"P6\": [70, 55]", "\"P6\": [700, 55]"), "far outside");
 }
 
+TEST_F(ShotFile, DistortionIsReadWrittenAndChecked) {
+  auto plain = loadShot(write("plain.json", shot()));
+  ASSERT_TRUE(plain.ok()) << plain.message();
+  EXPECT_FALSE(plain->shot.distortion.has_value());  // absent: not known
+  auto lens = loadShot(write("lens.json", shot(", \"distortion\": {\"k1\": -0.12, \"k2\": 0.01}")));
+  ASSERT_TRUE(lens.ok()) << lens.message();
+  ASSERT_TRUE(lens->shot.distortion.has_value());
+  EXPECT_EQ(lens->shot.distortion->k1, -0.12);
+  EXPECT_EQ(lens->shot.distortion->k2, 0.01);
+  ASSERT_TRUE(writeShotFile(dir_ / "lens_copy.json", lens->shot).ok());
+  auto again = loadShot(dir_ / "lens_copy.json");
+  ASSERT_TRUE(again.ok()) << again.message();
+  ASSERT_TRUE(again->shot.distortion.has_value());
+  EXPECT_EQ(again->shot.distortion->k1, -0.12);
+  EXPECT_EQ(again->shot.distortion->k2, 0.01);
+  // A shot without one is written without one.
+  ASSERT_TRUE(writeShotFile(dir_ / "plain_copy.json", plain->shot).ok());
+  std::ifstream in(dir_ / "plain_copy.json");
+  EXPECT_FALSE(nlohmann::json::parse(in).contains("distortion"));
+  expectError(shot(", \"distortion\": -0.1"), "distortion must be {\"k1\"");
+  expectError(shot(", \"distortion\": {\"k1\": \"wide\"}"), "must be a number");
+  expectError(shot(", \"distortion\": {\"k3\": 0.1}"), "\"k3\" is not one of them");
+  expectError(shot(", \"distortion\": {\"k1\": 7}"), "within -2..2");
+}
+
+TEST_F(ShotFile, WithoutAFocalLengthTheExifsOrAnError) {
+  // photo.png has no EXIF: a shot without a focal length is refused, saying so; given
+  // one (the command line's), it loads.
+  expectError(shot("", "\"principal_point\": [39.5, 29.5]"), "no EXIF focal length");
+  auto given = loadShot(write("given.json", shot("", "\"principal_point\": [39.5, 29.5]")), 65.0);
+  ASSERT_TRUE(given.ok()) << given.message();
+  EXPECT_EQ(given->shot.focalPx, 65.0);
+  EXPECT_EQ(given->focalSource, "given");
+  auto own = loadShot(write("own.json", shot(", \"focal_source\": \"set in the editor\"")));
+  ASSERT_TRUE(own.ok());
+  EXPECT_EQ(own->focalSource, "set in the editor");
+}
+
 TEST_F(ShotFile, BrokenImagesAreErrors) {
   std::ofstream(dir_ / "empty.png").close();
   std::ofstream(dir_ / "junk.png") << "this is not a png";

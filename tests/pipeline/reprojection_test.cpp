@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
@@ -23,6 +24,7 @@
 #include "engine/gltf/gltf_writer.h"
 #include "engine/vrml/vrml_writer.h"
 #include "engine/gpu/renderer.h"
+#include "metrology/distortion.h"
 #include "tests/support/groundtruth.h"
 #include "tests/support/reprojection_mask.h"
 
@@ -36,17 +38,23 @@ struct Psnr {
   double withEdges = 0;
 };
 
-// Renders `scene` from the camera that took the shot's photo (corridor 0 of `built`)
-// and compares with the photo; `label` names the saved frame in test-output/.
-Psnr reprojection(const engine::Scene& scene, const BuiltModel& built, const metrology::Shot& shot, const cv::Mat& photo,
-                  const std::string& label) {
+// A renderer on the CPU device with the validation layers on, holding `scene`.
+Result<std::unique_ptr<engine::Renderer>> cpuRendererWith(const engine::Scene& scene) {
   engine::RendererOptions options;
   options.forceCpu = true;
   options.validation = engine::RendererOptions::Validation::kOn;
   auto renderer = engine::Renderer::create(options);
+  if (renderer) EXPECT_TRUE((*renderer)->setScene(scene).ok());
+  return renderer;
+}
+
+// Renders `scene` from the camera that took the shot's photo (corridor 0 of `built`)
+// and compares with the photo; `label` names the saved frame in test-output/.
+Psnr reprojection(const engine::Scene& scene, const BuiltModel& built, const metrology::Shot& shot, const cv::Mat& photo,
+                  const std::string& label) {
+  auto renderer = cpuRendererWith(scene);
   EXPECT_TRUE(renderer.ok()) << renderer.message();
   if (!renderer) return {};
-  EXPECT_TRUE((*renderer)->setScene(scene).ok());
   const engine::Camera camera = modeling::photoCamera(built.corridors[0].measurement, photo.cols, photo.rows,
                                                       built.plan.worldFromCorridor[0]);
   auto image = (*renderer)->renderToImage(camera, photo.cols, photo.rows);
@@ -78,6 +86,9 @@ const std::map<std::string, MeasuredPsnr> kMeasured = {
     {"corridor_g", {46.76, 45.65}}, {"corridor_h", {49.69, 47.13}},
 };
 constexpr double kMarginDb = 2.0;
+// Through a distorting lens (ReprojectionThroughLens below), measured 2026-12-01, dB.
+const std::map<std::string, double> kMeasuredThroughLens = {
+    {"corridor_a_k010", 37.88}, {"corridor_a_k020", 37.88}, {"corridor_f_k020", 34.91}, {"corridor_h_k020", 39.43}};
 
 class Reprojection : public ::testing::TestWithParam<std::string> {};
 
@@ -122,6 +133,69 @@ TEST(ReprojectionThroughFiles, WrittenModelsRenderAsSharplyAsTheBuiltOne) {
     EXPECT_NEAR(read.inner, inMemory.inner, 0.5) << file;
   }
 }
+
+// Through a distorting lens (the ground truth photographed through k1 = -0.1 and -0.2,
+// tests/metrology/make_distorted.py; the shot's corners exact, its distortion the
+// lens's): the model built from it, rendered from the photo's camera through the lens
+// as `render --camera-from` does (a larger pinhole frame, remapped), gives the distorted
+// photo back (37.9, 37.9, 34.9 and 39.4 dB; 44.8, 47.1 and 49.7 without distortion,
+// where the textures are not cut through a lens nor the frame remapped). The mask is
+// the undistorted photo's, taken through the lens.
+class ReprojectionThroughLens : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ReprojectionThroughLens, RenderThroughTheLensGivesThePhotoBack) {
+  const fs::path shotPath = fs::path(PW_BINARY_DIR) / "groundtruth-distorted" / (GetParam() + ".json");
+  auto built = modeling::buildModel(modeling::chainLayout({shotPath}), {});
+  ASSERT_TRUE(built.ok()) << built.message();
+  auto measured = modeling::measureShotFile(shotPath);
+  ASSERT_TRUE(measured.ok()) << measured.message();
+  const cv::Mat& photo = measured->loaded.image;
+  const metrology::Intrinsics& lens = measured->measurement.camera;
+  ASSERT_FALSE(lens.distortion.isNone());
+
+  auto renderer = cpuRendererWith(built->scene);
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  const engine::Camera camera = modeling::photoCamera(measured->measurement, photo.cols, photo.rows,
+                                                      built->plan.worldFromCorridor[0]);
+  const modeling::LensFrame frame = modeling::lensFrame(camera, lens, photo.cols, photo.rows);
+  auto pinhole = (*renderer)->renderToImage(frame.camera, frame.width, frame.height);
+  ASSERT_TRUE(pinhole.ok()) << pinhole.message();
+  EXPECT_EQ((*renderer)->validationMessageCount(), 0u);
+  engine::Image image = modeling::distortFrame(*pinhole, frame, lens, photo.cols, photo.rows);
+  cv::Mat rendered(image.height, image.width, CV_8UC4, image.rgba.data()), renderedBgr;
+  cv::cvtColor(rendered, renderedBgr, cv::COLOR_RGBA2BGR);
+
+  // The corridor's mask in the pinhole image (its corners undistorted), through the lens.
+  std::array<glm::dvec2, kCornerCount> pinholeCorners{};
+  for (int i = 0; i < kCornerCount; ++i) {
+    auto p = metrology::undistortPixel(lens, measured->loaded.shot.cornersPx[i]);
+    ASSERT_TRUE(p.has_value());
+    pinholeCorners[i] = *p;
+  }
+  cv::Mat mapX, mapY, interior, quad;
+  metrology::distortionMaps(lens, photo.size(), glm::dvec2(0.0), mapX, mapY);
+  cv::remap(test::corridorMask(pinholeCorners, photo.size(), 3), interior, mapX, mapY, cv::INTER_NEAREST);
+  cv::remap(test::corridorMask(pinholeCorners, photo.size(), 0), quad, mapX, mapY, cv::INTER_NEAREST);
+  const double inner = test::maskedPsnr(renderedBgr, photo, interior);
+  const double withEdges = test::maskedPsnr(renderedBgr, photo, quad);
+  // Without the lens (the pinhole frame at the photo's size): what the lens model buys.
+  auto plain = (*renderer)->renderToImage(camera, photo.cols, photo.rows);
+  ASSERT_TRUE(plain.ok());
+  cv::Mat plainRgba(plain->height, plain->width, CV_8UC4, plain->rgba.data()), plainBgr;
+  cv::cvtColor(plainRgba, plainBgr, cv::COLOR_RGBA2BGR);
+  const double withoutLens = test::maskedPsnr(plainBgr, photo, interior);
+  std::printf("[reprojection] %-16s through the lens: PSNR %.2f dB without plane edges, %.2f dB with them; "
+              "%.2f dB drawn without the lens\n", GetParam().c_str(), inner, withEdges, withoutLens);
+  const fs::path outDir = fs::path(PW_BINARY_DIR) / "test-output";
+  fs::create_directories(outDir);
+  cv::imwrite((outDir / (GetParam() + "_reprojected.png")).string(), renderedBgr);
+  EXPECT_GE(inner, kMeasuredThroughLens.at(GetParam()) - kMarginDb);
+  EXPECT_GT(inner, withoutLens + 3.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lens, ReprojectionThroughLens,
+                         ::testing::Values("corridor_a_k010", "corridor_a_k020", "corridor_f_k020", "corridor_h_k020"),
+                         [](const auto& info) { return info.param; });
 
 INSTANTIATE_TEST_SUITE_P(Corridors, Reprojection,
                          ::testing::ValuesIn(groundtruth::groundTruthNames()),
