@@ -192,7 +192,9 @@ TEST(DistortionCommands, DetectWritesTheLensAndMeasureUsesIt) {
 class ExifFocalLength : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(PW_BINARY_DIR) / "test-output" / "exif_focal";
+    // One folder per test: CTest runs them in parallel.
+    dir_ = fs::path(PW_BINARY_DIR) / "test-output" / "exif_focal" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     truth_ = groundtruth::loadGroundTruth("corridor_d");

@@ -400,7 +400,7 @@ TEST_F(Building, ThePreviewPaneShowsTheWholeBuildingRebuiltWhenAnEditIsReleasedN
   s.at(11, "mouse left up").at(13, "preview-wait").at(13, "capture pane_after.png");
   // A left drag over the pane orbits it (the plan stays as it is).
   const json paneRect = probe.back().raw.at("preview").at("rect");
-  const glm::dvec2 paneCentre(double(paneRect[0]) + 0.5 * double(paneRect[2]), double(paneRect[1]) + 0.5 * double(paneRect[3]));
+  const glm::dvec2 paneCentre{double(paneRect[0]) + 0.5 * double(paneRect[2]), double(paneRect[1]) + 0.5 * double(paneRect[3])};
   s.move(15, paneCentre).at(16, "mouse left down").move(17, paneCentre + glm::dvec2(40, 10)).at(18, "mouse left up");
   s.at(20, "quit");
   const auto rows = edit("pane", layout, s.str());

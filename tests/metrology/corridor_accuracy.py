@@ -18,7 +18,8 @@ MAX_PCT, MAX_POSITION_M, MAX_DEG = 0.01, 1e-4, 1e-3
 def main():
     gt_dir, photowalk = sys.argv[1], sys.argv[2]
     method = sys.argv[sys.argv.index("--method") + 1]
-    scenes = sorted(glob.glob(os.path.join(gt_dir, "corridor_*.json")))
+    # The scenes, not their novel views (NAME_view_KIND.json: cameras, no answers).
+    scenes = sorted(p for p in glob.glob(os.path.join(gt_dir, "corridor_*.json")) if "_view_" not in p)
     if len(scenes) < 8:
         print("only %d ground-truth scenes in %s (the build renders 8)" % (len(scenes), gt_dir))
         return 1

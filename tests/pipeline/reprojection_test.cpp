@@ -44,7 +44,9 @@ Result<std::unique_ptr<engine::Renderer>> cpuRendererWith(const engine::Scene& s
   options.forceCpu = true;
   options.validation = engine::RendererOptions::Validation::kOn;
   auto renderer = engine::Renderer::create(options);
-  if (renderer) EXPECT_TRUE((*renderer)->setScene(scene).ok());
+  if (renderer) {
+    EXPECT_TRUE((*renderer)->setScene(scene).ok());
+  }
   return renderer;
 }
 

@@ -444,8 +444,9 @@ TEST_F(WalkFrame, SampleRoomWithinItsMeasuredFigureOfTheRender) {
 }
 
 // README: "a lit photowalk corridor within 0.9/255". Measured at 1280x720, viewpoint 1
-// ("Photo") of `build assets/corridor.json --lit`: 0.262/255 (0.305 at 640x360), worst
-// tile 0.68/255. With per-pixel lighting and 4x MSAA: identical to the render (its
+// ("Photo") of `build assets/corridor.json --lit`: 0.339/255, worst tile 0.886/255
+// (0.262 and 0.68 before the corridor was closed behind the camera: the closing wall
+// and the textured strips are lit per vertex too). With per-pixel lighting and 4x MSAA: identical to the render (its
 // textures, cut from the photo, are filtered alike in both); per-pixel lighting alone
 // 0.050, 4x MSAA alone 0.215.
 TEST_F(WalkFrame, LitCorridorWithinItsMeasuredFigureOfTheRender) {
@@ -457,8 +458,8 @@ TEST_F(WalkFrame, LitCorridorWithinItsMeasuredFigureOfTheRender) {
 
   const Comparison plain = compare(model.string(), "corridor", "");
   EXPECT_NE(plain.summary.find("1x MSAA, trilinear filtering, lit per vertex"), std::string::npos) << plain.summary;
-  EXPECT_NEAR(plain.meanAbs, 0.262, 0.05);
-  EXPECT_NEAR(plain.tiles.worst, 0.68, 0.15);
+  EXPECT_NEAR(plain.meanAbs, 0.339, 0.05);
+  EXPECT_NEAR(plain.tiles.worst, 0.886, 0.15);
 
   const Comparison full = compare(model.string(), "corridor_full", "--per-pixel-lighting --msaa 4");
   EXPECT_NE(full.summary.find("4x MSAA, trilinear filtering, lit per pixel"), std::string::npos) << full.summary;
