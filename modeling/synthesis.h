@@ -13,8 +13,9 @@
 //    so the phase of bricks, tiles and boards comes from the coarse evidence, and the
 //    match's detail (its difference from its own blur) is added to the tile. The tile's
 //    own low frequencies, its shading and colour, stay as the photo has them. The
-//    detail is finer than the photo's pixels there, so from the photo's camera it
-//    averages out.
+//    detail is finer than the photo's pixels there, yet photowalk's renderer samples a
+//    texture cut from a photo at the photo's own resolution (scene.frag), so from the
+//    photo's camera it shows: `build` adds it only with --detail.
 //  - fill: tiles the photo does not show (and any columns the caller adds before the
 //    first, the surface running on towards and behind the camera) are copied from the
 //    exemplar at the same rows, shifted along the depth by whole periods when the
@@ -31,7 +32,7 @@
 namespace pw::modeling {
 
 struct SynthesisOptions {
-  bool detail = true;  // add detail where the photo was coarse
+  bool detail = false;  // add detail where the photo was coarse
   bool fill = true;    // fill what the photo did not see
 };
 
