@@ -119,7 +119,7 @@ std::optional<std::pair<double, ManhattanFrame>> focalFromSecondPoint(const std:
 
 // What the far-wall searches share.
 struct FarWallSearch {
-  const cv::Mat& photo;
+  const PinholeView& photo;
   const WorkingImage& work;
   const DetectOptions& options;
   glm::dvec2 vp, vpWork;  // the corridor's vanishing point, full-resolution and working pixels
@@ -194,7 +194,7 @@ void assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& 
 // and the boundaries beyond it fitted at full resolution, then P5..P8, and the
 // doubts it leaves. The error is the reason no corridor is there.
 Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection d, const Quad& farWork, double farT) {
-  const cv::Mat& photo = s.photo;
+  const PinholeView& photo = s.photo;
   const WorkingImage& work = s.work;
   const cv::Size size = photo.size();
   const glm::dvec2 vp = s.vp;
@@ -292,32 +292,17 @@ const char* nearDepthName(NearDepth depth) {
   return depth == NearDepth::kMarkedCrossSection ? "marked_cross_section" : "image_edge";
 }
 
-Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptions& options) {
-  if (photo.empty() || photo.type() != CV_8UC3) return makeError("detect needs an 8-bit colour photo");
-  if (photo.cols < kMinPhotoSidePx || photo.rows < kMinPhotoSidePx) {
-    return makeError("the photo is " + std::to_string(photo.cols) + "x" + std::to_string(photo.rows) +
-                     " pixels; detection needs at least " + std::to_string(kMinPhotoSidePx) + " on each side");
-  }
-  if (options.focalPx && !(*options.focalPx > 0 && std::isfinite(*options.focalPx))) {
-    return makeError("the focal length must be a positive number of pixels");
-  }
-  const cv::Size size = photo.size();
-  const glm::dvec2 pp = options.principalPointPx.value_or(glm::dvec2((size.width - 1) * 0.5, (size.height - 1) * 0.5));
-  if (!(pp.x >= 0 && pp.y >= 0 && pp.x <= size.width - 1 && pp.y <= size.height - 1)) {
-    return makeError("the principal point must lie inside the " + std::to_string(size.width) + "x" +
-                     std::to_string(size.height) + " photo");
-  }
-  const double diagonal = std::hypot(size.width, size.height);
+namespace {
 
+// Detection on the pinhole image `photo` (the photo itself, or the photo seen
+// through its lens), whose working copy is `work` and its segments `segments`.
+Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
+                                       const std::vector<LineSegment>& segments, const DetectOptions& options,
+                                       glm::dvec2 pp) {
+  const cv::Size size = photo.size();
   CorridorDetection d;
   d.principalPointPx = pp;
-  const WorkingImage work = makeWorkingImage(photo, std::max(kMinPhotoSidePx, options.workingMaxSidePx));
-  const std::vector<LineSegment> segments = detectLineSegments(work.gray, work.scale, kMinSegmentLengthOfDiagonal * diagonal);
   d.segmentCount = static_cast<int>(segments.size());
-  if (options.estimateDistortion) {
-    const double focalPx = options.focalPx.value_or(kDefaultFocalOverLongSide * std::max(size.width, size.height));
-    if (auto lens = fitPlumbLines(work, segments, pp, focalPx)) return detectThroughLens(photo, options, *lens);
-  }
 
   // Vanishing points, and the focal length when it is not given.
   d.focalSource = options.focalPx ? FocalSource::kGiven : FocalSource::kDefault;
@@ -412,6 +397,48 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   doubt(better, "two fits of the room disagree on the far wall (by " + std::to_string(static_cast<int>(std::lround(apartPx))) +
                     " px)");
   return better;
+}
+
+}  // namespace
+
+Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptions& options) {
+  if (photo.empty() || photo.type() != CV_8UC3) return makeError("detect needs an 8-bit colour photo");
+  if (photo.cols < kMinPhotoSidePx || photo.rows < kMinPhotoSidePx) {
+    return makeError("the photo is " + std::to_string(photo.cols) + "x" + std::to_string(photo.rows) +
+                     " pixels; detection needs at least " + std::to_string(kMinPhotoSidePx) + " on each side");
+  }
+  if (options.focalPx && !(*options.focalPx > 0 && std::isfinite(*options.focalPx))) {
+    return makeError("the focal length must be a positive number of pixels");
+  }
+  const cv::Size size = photo.size();
+  const glm::dvec2 pp = options.principalPointPx.value_or(glm::dvec2((size.width - 1) * 0.5, (size.height - 1) * 0.5));
+  if (!(pp.x >= 0 && pp.y >= 0 && pp.x <= size.width - 1 && pp.y <= size.height - 1)) {
+    return makeError("the principal point must lie inside the " + std::to_string(size.width) + "x" +
+                     std::to_string(size.height) + " photo");
+  }
+  const double diagonal = std::hypot(size.width, size.height);
+  const double minSegmentPx = kMinSegmentLengthOfDiagonal * diagonal;
+  const WorkingImage work = makeWorkingImage(photo, std::max(kMinPhotoSidePx, options.workingMaxSidePx));
+  const std::vector<LineSegment> segments = detectLineSegments(work.gray, work.scale, minSegmentPx);
+  const double focalPx = options.focalPx.value_or(kDefaultFocalOverLongSide * std::max(size.width, size.height));
+  const std::optional<PlumbLineFit> lens =
+      options.estimateDistortion ? fitPlumbLines(work, segments, pp, focalPx) : std::nullopt;
+  if (!lens) return findCorridor(PinholeView(photo), work, segments, options, pp);
+
+  // Through the lens: the working copy undistorted (cheap at its size), the
+  // full-resolution fits reading the photo through the lens, the corners taken back
+  // into the photo. The vanishing points stay the pinhole image's.
+  const WorkingImage pinholeWork = undistortWorkingImage(work, lens->lens);
+  auto d = findCorridor(PinholeView(photo, lens->lens), pinholeWork,
+                        detectLineSegments(pinholeWork.gray, pinholeWork.scale, minSegmentPx), options, pp);
+  if (!d) return d;
+  // k1 fixes the bend in pixels as k1 / f²: the same bend for the focal length found.
+  const double rescale = d->focalPx / lens->lens.focalPx;
+  d->distortion.k1 = lens->lens.distortion.k1 * rescale * rescale;
+  d->plumbLineCount = lens->lineCount;
+  if (!d->found) return d;
+  for (CornerEstimate& corner : d->corners) corner.px = distortPixel(lens->lens, corner.px);
+  return d;
 }
 
 }  // namespace pw::metrology::detect

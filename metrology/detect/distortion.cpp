@@ -5,8 +5,6 @@
 #include <cmath>
 #include <numeric>
 
-#include <opencv2/imgproc.hpp>
-
 #include "metrology/distortion.h"
 #include "metrology/least_squares.h"
 
@@ -281,24 +279,6 @@ std::optional<PlumbLineFit> fitPlumbLines(const WorkingImage& work, const std::v
     return std::nullopt;
   }
   return fit;
-}
-
-Result<CorridorDetection> detectThroughLens(const cv::Mat& photo, const DetectOptions& options, const PlumbLineFit& fit) {
-  // Bicubic: Lanczos (3.5 times slower on 12 MP) measured no better on the ground truth.
-  cv::Mat mapX, mapY, pinhole;
-  undistortionMaps(fit.lens, photo.size(), glm::dvec2(0.0), mapX, mapY);
-  cv::remap(photo, pinhole, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
-  DetectOptions inner = options;
-  inner.estimateDistortion = false;
-  auto d = detectCorridor(pinhole, inner);
-  if (!d) return d;
-  // k1 fixes the bend in pixels as k1 / f²: the same bend for the focal length found.
-  const double scale = d->focalPx / fit.lens.focalPx;
-  d->distortion.k1 = fit.lens.distortion.k1 * scale * scale;
-  d->plumbLineCount = fit.lineCount;
-  if (!d->found) return d;
-  for (CornerEstimate& corner : d->corners) corner.px = distortPixel(fit.lens, corner.px);
-  return d;
 }
 
 }  // namespace pw::metrology::detect

@@ -3,8 +3,8 @@
 // be straight", 2001). Lines that are straight in the world (the corridor's edges,
 // mortar and tile joints, frames) are chains of LSD segments in the photo, slightly
 // bent by the lens; the radial coefficient k1 that makes them straight again, fitted
-// to their sub-pixel edge points, is the lens's. Then detection runs on the photo
-// undistorted, and its corners are taken back into the photo.
+// to their sub-pixel edge points, is the lens's. Then detection runs on the pinhole
+// image behind the photo (detect.cpp), and its corners are taken back into the photo.
 #pragma once
 
 #include <optional>
@@ -37,11 +37,5 @@ struct PlumbLineFit {
 // distortion is left a pinhole (detection then runs as it always did).
 std::optional<PlumbLineFit> fitPlumbLines(const WorkingImage& work, const std::vector<LineSegment>& segments,
                                           glm::dvec2 principalPointPx, double focalPx);
-
-// Detection through the lens `fit` found: the photo undistorted (same size and
-// principal point), detected as a pinhole photo, and the corners taken back through the
-// lens into `photo`'s pixels. The vanishing points stay the undistorted image's; the
-// result's distortion is the lens's k1 for the focal length detection settled on.
-Result<CorridorDetection> detectThroughLens(const cv::Mat& photo, const DetectOptions& options, const PlumbLineFit& fit);
 
 }  // namespace pw::metrology::detect

@@ -5,13 +5,13 @@
 #include <vector>
 
 #include "metrology/detect/geometry.h"
+#include "metrology/distortion.h"
 
 namespace pw::metrology::detect {
-namespace {
 
-constexpr double kMinStep = 8.0;  // grey levels between the two sides' mean colours
-
-glm::dvec3 sampleColour(const cv::Mat& photo, glm::dvec2 p) {
+glm::dvec3 PinholeView::colour(glm::dvec2 p) const {
+  if (lens_) p = distortPixel(*lens_, p);
+  const cv::Mat& photo = photo_;
   const double x = std::clamp(p.x, 0.0, photo.cols - 1.001), y = std::clamp(p.y, 0.0, photo.rows - 1.001);
   const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
   const int x1 = std::min(x0 + 1, photo.cols - 1), y1 = std::min(y0 + 1, photo.rows - 1);
@@ -25,6 +25,10 @@ glm::dvec3 sampleColour(const cv::Mat& photo, glm::dvec2 p) {
   return out;
 }
 
+namespace {
+
+constexpr double kMinStep = 8.0;  // grey levels between the two sides' mean colours
+
 struct EdgePoint {
   glm::dvec2 p;
   double weight;
@@ -33,11 +37,11 @@ struct EdgePoint {
 // The edge across one normal: Haar step response at every half-pixel between
 // samples one pixel apart; of its peaks at least `relative` times the strongest, the
 // one nearest the centre, placed by a parabola.
-std::optional<EdgePoint> findEdge(const cv::Mat& photo, glm::dvec2 centre, glm::dvec2 normal, double searchPx, int half,
+std::optional<EdgePoint> findEdge(const PinholeView& photo, glm::dvec2 centre, glm::dvec2 normal, double searchPx, int half,
                                   double relative) {
   const int reach = static_cast<int>(std::ceil(searchPx)) + half;
   std::vector<glm::dvec3> colour(2 * reach + 1);
-  for (int k = -reach; k <= reach; ++k) colour[k + reach] = sampleColour(photo, centre + static_cast<double>(k) * normal);
+  for (int k = -reach; k <= reach; ++k) colour[k + reach] = photo.colour(centre + static_cast<double>(k) * normal);
   // Response between sample j and j+1 (offset j + 0.5 from the centre).
   const int first = -reach + half - 1, last = reach - half;
   std::vector<double> response;
@@ -113,7 +117,7 @@ std::optional<glm::dvec3> fitLineThrough(glm::dvec3 q, const std::vector<EdgePoi
 
 double EdgeLine::positionSigmaPx() const { return std::max(0.05, rmsPx / std::sqrt(std::max(1, inliers))); }
 
-std::optional<EdgeLine> fitEdgeLine(const cv::Mat& photo, const EdgeSearch& search) {
+std::optional<EdgeLine> fitEdgeLine(const PinholeView& photo, const EdgeSearch& search) {
   const double length = glm::length(search.to - search.from);
   if (length < 2 || photo.empty()) return std::nullopt;
   const glm::dvec2 along = (search.to - search.from) / length;
@@ -124,7 +128,7 @@ std::optional<EdgeLine> fitEdgeLine(const cv::Mat& photo, const EdgeSearch& sear
   std::vector<EdgePoint> points;
   for (int i = 0; i < samples; ++i) {
     const glm::dvec2 centre = search.from + (length * (i + 0.5) / samples) * along;
-    if (centre.x < 0 || centre.y < 0 || centre.x > photo.cols - 1 || centre.y > photo.rows - 1) continue;
+    if (centre.x < 0 || centre.y < 0 || centre.x > photo.size().width - 1 || centre.y > photo.size().height - 1) continue;
     const double window = search.searchPx + search.searchGrowPx * (i + 0.5) / samples;
     if (auto e = findEdge(photo, centre, normal, window, half, search.minRelativeStrength)) points.push_back(*e);
   }

@@ -6,7 +6,28 @@
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
 
+#include "metrology/corridor_frame.h"
+
 namespace pw::metrology::detect {
+
+// The photo as the full-resolution fits see it: a pinhole image of the photo's size,
+// read bilinearly. Through a lens, a pinhole pixel is read where the lens put it in
+// the photo (one interpolation, and the photo is never undistorted whole: on 12 MP
+// that remap alone cost more than the rest of detection).
+class PinholeView {
+ public:
+  explicit PinholeView(const cv::Mat& photo) : photo_(photo) {}
+  PinholeView(const cv::Mat& photo, const Intrinsics& lens) : photo_(photo), lens_(lens) {}
+  cv::Size size() const { return photo_.size(); }
+  bool empty() const { return photo_.empty(); }
+  // The colour (B, G, R) at pinhole pixel p; reads beyond the photo's edge take its
+  // nearest pixel.
+  glm::dvec3 colour(glm::dvec2 p) const;
+
+ private:
+  cv::Mat photo_;  // CV_8UC3 (a header: the pixels are shared)
+  std::optional<Intrinsics> lens_;
+};
 
 struct EdgeLine {
   glm::dvec3 line{0, 0, 0};  // normalised homogeneous line: l·(u, v, 1) is a signed distance in pixels
@@ -38,7 +59,7 @@ struct EdgeSearch {
 // parabola through the response), then
 // fits the line through `through` that minimises the squared distances, with
 // outliers (texture edges, occlusions) dropped by a MAD rule. nullopt when fewer
-// than 5 samples found an edge. `photo` is CV_8UC3 at full resolution.
-std::optional<EdgeLine> fitEdgeLine(const cv::Mat& photo, const EdgeSearch& search);
+// than 5 samples found an edge.
+std::optional<EdgeLine> fitEdgeLine(const PinholeView& photo, const EdgeSearch& search);
 
 }  // namespace pw::metrology::detect

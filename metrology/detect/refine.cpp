@@ -29,7 +29,7 @@ double cornerConfidence(const EdgeLine& a, bool fittedA, const EdgeLine& b, bool
 
 }  // namespace
 
-RefinedSection refineCrossSection(const cv::Mat& photo, const Quad& coarse, glm::dvec3 horizontal,
+RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, glm::dvec3 horizontal,
                                   glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
                                   double minRelativeStrength) {
   RefinedSection out;
@@ -73,7 +73,7 @@ RefinedSection refineCrossSection(const cv::Mat& photo, const Quad& coarse, glm:
   return out;
 }
 
-std::array<RefinedBoundary, kBoundaryCount> refineBoundaries(const cv::Mat& photo, glm::dvec2 vp,
+std::array<RefinedBoundary, kBoundaryCount> refineBoundaries(const PinholeView& photo, glm::dvec2 vp,
                                                              const std::array<glm::dvec2, kBoundaryCount>& coarseDirection,
                                                              const std::array<double, kBoundaryCount>& fromRadius,
                                                              double searchPx, double stepHalfWidthPx) {

@@ -26,7 +26,7 @@ struct RefinedSection {
 // vanishing point and left and right through the vertical one, and intersects them.
 // A side with no edge keeps its coarse line and gives its corners low confidence.
 // `minRelativeStrength` as in EdgeSearch.
-RefinedSection refineCrossSection(const cv::Mat& photo, const Quad& coarse, glm::dvec3 horizontal,
+RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, glm::dvec3 horizontal,
                                   glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
                                   double minRelativeStrength = 0.5);
 
@@ -38,7 +38,7 @@ struct RefinedBoundary {
 // Refits each boundary ray through the vanishing point (full-resolution pixels) to
 // the image edge beyond radius `fromRadius[b]`, to the image border. The search
 // window widens with the radius, as the coarse angle's error does.
-std::array<RefinedBoundary, kBoundaryCount> refineBoundaries(const cv::Mat& photo, glm::dvec2 vanishingPoint,
+std::array<RefinedBoundary, kBoundaryCount> refineBoundaries(const PinholeView& photo, glm::dvec2 vanishingPoint,
                                                              const std::array<glm::dvec2, kBoundaryCount>& coarseDirection,
                                                              const std::array<double, kBoundaryCount>& fromRadius,
                                                              double searchPx, double stepHalfWidthPx);

@@ -5,6 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "metrology/distortion.h"
+
 namespace pw::metrology::detect {
 
 void colourGradient(const cv::Mat& bgr, cv::Mat& gradX, cv::Mat& gradY) {
@@ -31,6 +33,22 @@ void colourGradient(const cv::Mat& bgr, cv::Mat& gradX, cv::Mat& gradY) {
   }
 }
 
+namespace {
+
+// Grey, gradients and edge masks of w.bgr.
+void computeGradients(WorkingImage& w) {
+  cv::cvtColor(w.bgr, w.gray, cv::COLOR_BGR2GRAY);
+  colourGradient(w.bgr, w.gradX, w.gradY);
+  const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
+  cv::Mat strong;
+  cv::compare(cv::abs(w.gradX), kEdgeGreyPerPx, strong, cv::CMP_GT);
+  cv::dilate(strong, w.edgeX, kernel);
+  cv::compare(cv::abs(w.gradY), kEdgeGreyPerPx, strong, cv::CMP_GT);
+  cv::dilate(strong, w.edgeY, kernel);
+}
+
+}  // namespace
+
 WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
   WorkingImage w;
   // Shrink by a whole factor k: OpenCV's area resampling then averages exact k x k
@@ -46,15 +64,22 @@ WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx) {
   } else {
     w.bgr = photoBgr;
   }
-  cv::cvtColor(w.bgr, w.gray, cv::COLOR_BGR2GRAY);
+  computeGradients(w);
+  return w;
+}
 
-  colourGradient(w.bgr, w.gradX, w.gradY);
-  const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
-  cv::Mat strong;
-  cv::compare(cv::abs(w.gradX), kEdgeGreyPerPx, strong, cv::CMP_GT);
-  cv::dilate(strong, w.edgeX, kernel);
-  cv::compare(cv::abs(w.gradY), kEdgeGreyPerPx, strong, cv::CMP_GT);
-  cv::dilate(strong, w.edgeY, kernel);
+WorkingImage undistortWorkingImage(const WorkingImage& work, const Intrinsics& lens) {
+  // The lens in working pixels: k1 and k2 are normalised by the focal length, so
+  // scaling the focal length and moving the principal point is the whole change.
+  Intrinsics scaled = lens;
+  scaled.focalPx = lens.focalPx * work.scale;
+  scaled.principalPointPx = work.toWorking(lens.principalPointPx);
+  cv::Mat mapX, mapY;
+  undistortionMaps(scaled, work.bgr.size(), glm::dvec2(0.0), mapX, mapY);
+  WorkingImage w;
+  w.scale = work.scale;
+  cv::remap(work.bgr, w.bgr, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
+  computeGradients(w);
   return w;
 }
 

@@ -6,6 +6,8 @@
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
 
+#include "metrology/corridor_frame.h"
+
 namespace pw::metrology::detect {
 
 // A gradient above this (grey levels per pixel, about a 12-level step) is an edge.
@@ -46,6 +48,11 @@ struct WorkingImage {
 // channel's, as in Di Zenzo's colour edges) keeps hue-only edges, e.g. a red brick
 // wall against a grey floor of the same brightness.
 WorkingImage makeWorkingImage(const cv::Mat& photoBgr, int maxSidePx);
+
+// The working copy of the pinhole photo behind `work` when the photo was taken
+// through `lens` (full-resolution pixels): `work` undistorted at its own resolution
+// (bicubic), with its gradients. The same scale and pixel-centre map as `work`.
+WorkingImage undistortWorkingImage(const WorkingImage& work, const Intrinsics& lens);
 
 // The colour gradient of `bgr` (CV_8UC3): per pixel, Sobel's derivatives of the
 // channel whose gradient is strongest, in grey levels per pixel (CV_32F each).

@@ -71,13 +71,13 @@ TEST(DetectParts, EdgeFitIsSubPixel) {
   search.to = p + 90.0 * dir + offset;
   search.through = homogeneous(p + 5000.0 * dir);
   search.searchPx = 4;
-  auto fit = fitEdgeLine(img, search);
+  auto fit = fitEdgeLine(PinholeView(img), search);
   ASSERT_TRUE(fit.has_value());
   EXPECT_LT(std::abs(glm::dot(fit->line, homogeneous(p))), 0.05);
   EXPECT_LT(std::abs(glm::dot(fit->line, homogeneous(p + 80.0 * dir))), 0.05);
   EXPECT_GT(fit->coverage, 0.9);
   // Nothing to find on a flat image.
-  EXPECT_FALSE(fitEdgeLine(cv::Mat(240, 320, CV_8UC3, cv::Scalar(90, 90, 90)), search).has_value());
+  EXPECT_FALSE(fitEdgeLine(PinholeView(cv::Mat(240, 320, CV_8UC3, cv::Scalar(90, 90, 90))), search).has_value());
 }
 
 struct Camera {
