@@ -69,40 +69,24 @@ engine::Camera overviewCamera(const engine::Bounds& bounds, double aspect, float
 
 BuildingPreview::BuildingPreview() = default;
 
-BuildingPreview::~BuildingPreview() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-  }
-  wake_.notify_one();
-  if (thread_.joinable()) thread_.join();
-}
+BuildingPreview::~BuildingPreview() = default;
 
 void BuildingPreview::update(app::Shell& shell) {
-  if (!renderer_) {
-    renderer_ = &shell.renderer();
-    thread_ = std::thread([this] { run(); });
+  if (!worker_) {
+    const engine::Renderer* renderer = &shell.renderer();
+    worker_ = std::make_unique<LatestWorker<Request, Done>>(
+        [renderer](Request& request, const auto& emit, const auto&) { emit(build(*renderer, request)); });
   }
-  std::vector<Done> done;
-  {
-    std::lock_guard lock(mutex_);
-    done = std::move(done_);
-    done_.clear();
-  }
-  for (Done& d : done) take(shell, std::move(d));
+  for (Done& d : worker_->takeDone()) take(shell, std::move(d));
 }
 
 void BuildingPreview::ask(const modeling::Layout& layout, std::vector<modeling::MeasuredShot> shots, std::string title) {
-  if (!renderer_) return;
+  if (!worker_) return;
   std::vector<metrology::Shot> plain = shotsOf(shots);
   if (askedLayout_ && sameLayout(*askedLayout_, layout) && sameShots(askedShots_, plain)) return;
   askedLayout_ = layout;
   askedShots_ = std::move(plain);
-  {
-    std::lock_guard lock(mutex_);
-    pending_ = Request{nextId_++, layout, std::move(shots), std::move(title)};
-  }
-  wake_.notify_one();
+  worker_->request(Request{nextId_++, layout, std::move(shots), std::move(title)});
 }
 
 void BuildingPreview::cannotBuild(std::string why) {
@@ -116,8 +100,7 @@ bool BuildingPreview::showsCurrent(const modeling::Layout& layout, const std::ve
 }
 
 bool BuildingPreview::busy() const {
-  std::lock_guard lock(mutex_);
-  return building_ || pending_.has_value() || !done_.empty();
+  return worker_ && (worker_->busy() || worker_->hasDone());
 }
 
 Status BuildingPreview::waitIdle(app::Shell& shell, double timeoutS) {
@@ -133,35 +116,21 @@ Status BuildingPreview::waitIdle(app::Shell& shell, double timeoutS) {
   return {};
 }
 
-void BuildingPreview::run() {
-  lowerThreadPriority();
-  for (;;) {
-    Request request;
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
-      if (stop_) return;
-      request = std::move(*pending_);
-      pending_.reset();
-      building_ = true;
-    }
-    const auto start = std::chrono::steady_clock::now();
-    Done done{request.id, request.layout, shotsOf(request.shots), makeError("not built")};
-    auto model = buildBuildingModel(request.layout, request.shots, previewModelOptions(PreviewResolution::kReduced),
-                                    request.title);
-    if (!model) {
-      done.built = model.error();
-    } else if (auto staged = renderer_->stageScene(model->scene); !staged) {
-      done.built = staged.error();
-    } else {
-      Built built{std::move(*staged), engine::sceneBounds(model->scene), 0.0};
-      built.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      done.built = std::move(built);
-    }
-    std::lock_guard lock(mutex_);
-    done_.push_back(std::move(done));
-    building_ = false;
+BuildingPreview::Done BuildingPreview::build(const engine::Renderer& renderer, const Request& request) {
+  const auto start = std::chrono::steady_clock::now();
+  Done done{request.id, request.layout, shotsOf(request.shots), makeError("not built")};
+  auto model = buildBuildingModel(request.layout, request.shots, previewModelOptions(PreviewResolution::kReduced),
+                                  request.title);
+  if (!model) {
+    done.built = model.error();
+  } else if (auto staged = renderer.stageScene(model->scene); !staged) {
+    done.built = staged.error();
+  } else {
+    Built built{std::move(*staged), engine::sceneBounds(model->scene), 0.0};
+    built.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    done.built = std::move(built);
   }
+  return done;
 }
 
 void BuildingPreview::take(app::Shell& shell, Done done) {

@@ -7,13 +7,10 @@
 // over the pane orbits about the building's centre, the wheel moves nearer or farther.
 #pragma once
 
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -21,6 +18,7 @@
 #include "base/result.h"
 #include "editor/app/app_mode.h"
 #include "editor/edit/canvas.h"
+#include "editor/edit/latest_worker.h"
 #include "editor/edit/preview.h"
 #include "engine/gpu/renderer.h"
 #include "engine/gpu/view.h"
@@ -84,19 +82,12 @@ class BuildingPreview {
     std::vector<metrology::Shot> shots;
     Result<Built> built = makeError("not built");
   };
-  void run();  // the worker
+  static Done build(const engine::Renderer& renderer, const Request& request);  // the worker's
   void take(app::Shell& shell, Done done);
 
   WindowRect rect_;
-  // The worker's: made with the first request (it needs the renderer).
-  const engine::Renderer* renderer_ = nullptr;
-  mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  std::optional<Request> pending_;
-  std::vector<Done> done_;
-  bool building_ = false;
-  bool stop_ = false;
-  std::thread thread_;
+  // Made with the first update (it needs the renderer).
+  std::unique_ptr<LatestWorker<Request, Done>> worker_;
 
   uint64_t nextId_ = 1;
   std::optional<modeling::Layout> askedLayout_;

@@ -88,36 +88,11 @@ Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const m
 }
 
 PreviewBuilder::PreviewBuilder(const engine::Renderer& renderer, int reducedSidePx)
-    : renderer_(renderer), reducedSidePx_(reducedSidePx), thread_([this] { run(); }) {}
+    : renderer_(renderer),
+      reducedSidePx_(reducedSidePx),
+      worker_([this](Request& request, const auto& emit, const auto& superseded) { build(request, emit, superseded); }) {}
 
-PreviewBuilder::~PreviewBuilder() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-  }
-  wake_.notify_one();
-  thread_.join();
-}
-
-void PreviewBuilder::request(Request request) {
-  {
-    std::lock_guard lock(mutex_);
-    pending_ = std::move(request);
-  }
-  wake_.notify_one();
-}
-
-std::vector<PreviewBuilder::Done> PreviewBuilder::takeDone() {
-  std::lock_guard lock(mutex_);
-  std::vector<Done> done = std::move(done_);
-  done_.clear();
-  return done;
-}
-
-bool PreviewBuilder::busy() const {
-  std::lock_guard lock(mutex_);
-  return building_ || pending_.has_value();
-}
+PreviewBuilder::~PreviewBuilder() = default;
 
 const cv::Mat& PreviewBuilder::reducedFor(const Request& request) {
   if (reducedDocument_ != request.documentId || reduced_.empty()) {
@@ -133,36 +108,18 @@ void lowerThreadPriority() {
 #endif
 }
 
-void PreviewBuilder::run() {
-  lowerThreadPriority();
-  for (;;) {
-    Request request;
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
-      if (stop_) return;
-      request = std::move(*pending_);
-      pending_.reset();
-      building_ = true;
-    }
-    const auto finish = [&](PreviewResolution from, Result<PreviewModel> model) {
-      std::lock_guard lock(mutex_);
-      done_.push_back({request.id, request.documentId, request.shot, from, std::move(model)});
-    };
-    const cv::Mat& reduced = reducedFor(request);
-    bool stale = false;
-    if (request.reducedOnly || request.reducedFirst) {
-      finish(PreviewResolution::kReduced,
-             buildPreviewModel(renderer_, request.shot, reduced, PreviewResolution::kReduced));
-      std::lock_guard lock(mutex_);
-      stale = pending_.has_value() || stop_;  // a newer shot came meanwhile: build that instead
-    }
-    if (!request.reducedOnly && !stale) {
-      finish(PreviewResolution::kFull,
-             buildPreviewModel(renderer_, request.shot, request.photo, PreviewResolution::kFull));
-    }
-    std::lock_guard lock(mutex_);
-    building_ = false;
+void PreviewBuilder::build(Request& request, const LatestWorker<Request, Done>::Emit& emit,
+                           const LatestWorker<Request, Done>::Superseded& superseded) {
+  const auto finish = [&](PreviewResolution from, Result<PreviewModel> model) {
+    emit({request.id, request.documentId, request.shot, from, std::move(model)});
+  };
+  const cv::Mat& reduced = reducedFor(request);
+  if (request.reducedOnly || request.reducedFirst) {
+    finish(PreviewResolution::kReduced, buildPreviewModel(renderer_, request.shot, reduced, PreviewResolution::kReduced));
+    if (superseded()) return;  // a newer shot came meanwhile: build that instead
+  }
+  if (!request.reducedOnly) {
+    finish(PreviewResolution::kFull, buildPreviewModel(renderer_, request.shot, request.photo, PreviewResolution::kFull));
   }
 }
 

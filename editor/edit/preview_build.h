@@ -9,17 +9,15 @@
 //   for (PreviewBuilder::Done& done : builder.takeDone()) renderer.replaceScene(h, std::move(done.model->staged));
 #pragma once
 
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <optional>
-#include <thread>
 #include <vector>
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
+#include "editor/edit/latest_worker.h"
 #include "engine/gpu/renderer.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/scene.h"
@@ -68,10 +66,6 @@ modeling::ModelOptions previewModelOptions(PreviewResolution resolution);
 Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const metrology::Shot& shot,
                                        const cv::Mat& photo, PreviewResolution resolution);
 
-// Lowers the calling thread's priority below the UI thread's (nice 5; Linux gives each
-// thread its own): a model worker's, so that on two cores the frames come first.
-void lowerThreadPriority();
-
 // One worker thread that builds what is asked last. A request waiting is replaced by a
 // newer one, so a drag's steps never queue up; the worker builds one at a time (a full
 // build is not interrupted: a newer request waits for it, up to about a second).
@@ -101,28 +95,23 @@ class PreviewBuilder {
   PreviewBuilder(const PreviewBuilder&) = delete;
   PreviewBuilder& operator=(const PreviewBuilder&) = delete;
 
-  void request(Request request);
+  void request(Request request) { worker_.request(std::move(request)); }
   // What finished since the last call, oldest first. Never waits for a build.
-  std::vector<Done> takeDone();
+  std::vector<Done> takeDone() { return worker_.takeDone(); }
   // A request waits or is being built.
-  bool busy() const;
+  bool busy() const { return worker_.busy(); }
 
  private:
-  void run();
+  void build(Request& request, const LatestWorker<Request, Done>::Emit& emit,
+             const LatestWorker<Request, Done>::Superseded& superseded);  // worker thread
   const cv::Mat& reducedFor(const Request& request);  // worker thread only
 
   const engine::Renderer& renderer_;
   const int reducedSidePx_;
-  mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  std::optional<Request> pending_;
-  std::vector<Done> done_;
-  bool building_ = false;
-  bool stop_ = false;
   // The worker's own: the reduced photo of the document last built.
   uint64_t reducedDocument_ = 0;
   cv::Mat reduced_;
-  std::thread thread_;  // last: started once the rest exists
+  LatestWorker<Request, Done> worker_;  // last: its thread starts once the rest exists
 };
 
 // The model a preview shows: which document's, which request's, from which photo.
