@@ -203,7 +203,10 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   const double stepHalfWidthPx = std::max(2.0, 1.0 / work.scale);
   Quad coarseFar;
   for (int k = 0; k < 4; ++k) coarseFar[k] = work.toFull(farWork[k]);
-  const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx, stepHalfWidthPx);
+  // Its top and bottom take their innermost edge: a floor's tile joint a pixel or three
+  // beyond the foot is often the stronger, and blur merges the two.
+  const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx,
+                                                stepHalfWidthPx, 0.5, InnerEdges{vp, false});
   for (int side = 0; side < 4; ++side) {
     if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
       static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};

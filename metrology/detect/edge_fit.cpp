@@ -38,7 +38,7 @@ struct EdgePoint {
 // samples one pixel apart; of its peaks at least `relative` times the strongest, the
 // one nearest the centre, placed by a parabola.
 std::optional<EdgePoint> findEdge(const PinholeView& photo, glm::dvec2 centre, glm::dvec2 normal, double searchPx, int half,
-                                  double relative) {
+                                  double relative, double inward) {
   const int reach = static_cast<int>(std::ceil(searchPx)) + half;
   std::vector<glm::dvec3> colour(2 * reach + 1);
   for (int k = -reach; k <= reach; ++k) colour[k + reach] = photo.colour(centre + static_cast<double>(k) * normal);
@@ -61,7 +61,8 @@ std::optional<EdgePoint> findEdge(const PinholeView& photo, glm::dvec2 centre, g
     const double offset = offsetOf(i);
     const bool peak = response[i] >= response[i - 1] && response[i] >= response[i + 1];
     if (std::abs(offset) > searchPx || !peak || response[i] < std::max(kMinStep, relative * strongest)) continue;
-    if (best < 0 || std::abs(offset) < std::abs(offsetOf(best))) best = i;
+    const bool better = inward != 0 ? inward * offset > inward * offsetOf(best) : std::abs(offset) < std::abs(offsetOf(best));
+    if (best < 0 || better) best = i;
   }
   if (best < 0) return std::nullopt;
   const double l = response[best - 1], c = response[best], r = response[best + 1];
@@ -113,6 +114,66 @@ std::optional<glm::dvec3> fitLineThrough(glm::dvec3 q, const std::vector<EdgePoi
   return n;
 }
 
+// The edge points the fit starts from. Beside an edge, another may run a pixel or
+// three away (a checker floor's next joint beyond the far wall's foot, a band's second
+// edge), and where the first is faint the samples split between the two: a least-squares
+// line through all of them falls between, on neither. So the points are grouped by the
+// line through `search.through` each lies on (within kModeHalfWidthPx), and the fit
+// starts from one group: of those holding at least kMinModeShare of the points, the
+// one farthest towards `search.innerPoint`.
+constexpr double kModeHalfWidthPx = 0.5;
+constexpr double kMinModeShare = 0.25;
+constexpr double kDistinctEdgesPx = 1.5;
+constexpr double kSplitLimitPx = 1.0;  // the outlier limit when the points split between edges
+
+std::vector<bool> startingPoints(const std::vector<EdgePoint>& points, const EdgeSearch& search, glm::dvec2 normal,
+                                 glm::dvec2 origin, bool& split) {
+  split = false;
+  // Each point's line through `through`, as its offset along the normal at `origin`.
+  const glm::dvec3 q(search.through.x - origin.x * search.through.z, search.through.y - origin.y * search.through.z,
+                     search.through.z);
+  std::vector<double> offset;
+  for (const EdgePoint& e : points) {
+    glm::dvec3 l = normalizedLine(glm::cross(q, glm::dvec3(e.p - origin, 1.0)));
+    if (!std::isfinite(l.z)) return std::vector<bool>(points.size(), true);
+    if (l.x * normal.x + l.y * normal.y < 0) l = -l;
+    offset.push_back(-l.z);
+  }
+  const size_t n = points.size();
+  const auto near = [&](double centre, size_t j, double halfWidth) { return std::abs(offset[j] - centre) <= halfWidth; };
+  std::vector<bool> taken(n, false);
+  std::optional<double> chosen;
+  int groups = 0;
+  const double inward = glm::dot(*search.innerPoint - origin, normal) >= 0 ? 1.0 : -1.0;
+  for (;;) {
+    // The densest line among the points not yet grouped.
+    size_t best = n, bestCount = 0;
+    for (size_t i = 0; i < n; ++i) {
+      if (taken[i]) continue;
+      size_t count = 0;
+      for (size_t j = 0; j < n; ++j) count += !taken[j] && near(offset[i], j, kModeHalfWidthPx);
+      if (count > bestCount) best = i, bestCount = count;
+    }
+    if (best == n || bestCount < kMinModeShare * n) break;
+    double sum = 0;
+    for (size_t j = 0; j < n; ++j) {
+      if (!taken[j] && near(offset[best], j, kModeHalfWidthPx)) sum += offset[j];
+    }
+    const double centre = sum / bestCount;
+    ++groups;
+    const bool better = !chosen || inward * centre > inward * *chosen;
+    if (better) chosen = centre;
+    // Its neighbours within kDistinctEdgesPx are the same edge (a sharp edge's
+    // sub-pixel positions cluster by the pixel grid's phase).
+    for (size_t j = 0; j < n; ++j) taken[j] = taken[j] || near(centre, j, kDistinctEdgesPx);
+  }
+  std::vector<bool> use(n, true);
+  if (groups < 2) return use;  // one edge (or none a quarter agree on): start from all, as always
+  split = true;
+  for (size_t j = 0; j < n; ++j) use[j] = near(*chosen, j, kDistinctEdgesPx);
+  return use;
+}
+
 }  // namespace
 
 double EdgeLine::positionSigmaPx() const { return std::max(0.05, rmsPx / std::sqrt(std::max(1, inliers))); }
@@ -130,15 +191,20 @@ std::optional<EdgeLine> fitEdgeLine(const PinholeView& photo, const EdgeSearch& 
     const glm::dvec2 centre = search.from + (length * (i + 0.5) / samples) * along;
     if (centre.x < 0 || centre.y < 0 || centre.x > photo.size().width - 1 || centre.y > photo.size().height - 1) continue;
     const double window = search.searchPx + search.searchGrowPx * (i + 0.5) / samples;
-    if (auto e = findEdge(photo, centre, normal, window, half, search.minRelativeStrength)) points.push_back(*e);
+    const double inward = search.innerPoint ? (glm::dot(*search.innerPoint - centre, normal) >= 0 ? 1.0 : -1.0) : 0.0;
+    if (auto e = findEdge(photo, centre, normal, window, half, search.minRelativeStrength, inward)) points.push_back(*e);
   }
   if (points.size() < 5) return std::nullopt;
 
   const glm::dvec2 origin = 0.5 * (search.from + search.to);
+  // Beside another edge (innerPoint): start from the section's own, and keep the
+  // outlier limit below the distance between the two.
+  bool split = false;
   std::vector<bool> use(points.size(), true);
+  if (search.innerPoint) use = startingPoints(points, search, normal, origin, split);
   std::optional<glm::dvec3> line;
   double rms = 0;
-  int inliers = 0;
+  int inliers = 0, agreeing = 0;
   for (int round = 0; round < 4; ++round) {
     line = fitLineThrough(search.through, points, use, origin);
     if (!line) return std::nullopt;
@@ -147,12 +213,17 @@ std::optional<EdgeLine> fitEdgeLine(const PinholeView& photo, const EdgeSearch& 
     std::vector<double> sorted = residuals;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     const double sigma = 1.4826 * sorted[sorted.size() / 2];
+    // The usual limit says which samples bear the line out (its coverage); where the
+    // points split between edges, the line follows those nearer than kSplitLimitPx.
     const double limit = std::max(2.5 * sigma, 0.35);
+    const double follow = split ? std::min(limit, kSplitLimitPx) : limit;
     double sum2 = 0;
     inliers = 0;
+    agreeing = 0;
     for (size_t i = 0; i < points.size(); ++i) {
-      use[i] = residuals[i] <= limit;
+      use[i] = residuals[i] <= follow;
       if (use[i]) sum2 += residuals[i] * residuals[i], ++inliers;
+      agreeing += residuals[i] <= limit;
     }
     if (inliers < 5) return std::nullopt;
     rms = std::sqrt(sum2 / inliers);
@@ -163,7 +234,7 @@ std::optional<EdgeLine> fitEdgeLine(const PinholeView& photo, const EdgeSearch& 
   out.line = *line;
   out.rmsPx = rms;
   out.inliers = inliers;
-  out.coverage = static_cast<double>(inliers) / samples;
+  out.coverage = static_cast<double>(agreeing) / samples;
   return out;
 }
 

@@ -51,6 +51,11 @@ struct EdgeSearch {
   // must not win by contrast alone, nor a band's outer edge where its inner edge
   // borders a dark tile.
   double minRelativeStrength = 0.5;
+  // When set, the edge is the one farthest towards this point (a section's inside: the
+  // far wall's own edge before any on the surface beyond it) rather than the one
+  // nearest the initial line, in each sample and in the fit, which starts from the
+  // innermost line a quarter of the samples agree on (fitEdgeLine).
+  std::optional<glm::dvec2> innerPoint;
 };
 
 // Finds the edge along each of up to maxSamples normals to the stretch from..to
@@ -58,7 +63,11 @@ struct EdgeSearch {
 // pixels on either side, chosen as EdgeSearch says and placed to sub-pixel by a
 // parabola through the response), then
 // fits the line through `through` that minimises the squared distances, with
-// outliers (texture edges, occlusions) dropped by a MAD rule. nullopt when fewer
+// outliers (texture edges, occlusions) dropped by a MAD rule over the points it
+// follows. With `innerPoint`, the fit starts from the innermost line that at least a
+// quarter of the samples' edges lie on (edges 1.5 px or more apart are distinct): where
+// the section's own edge is faint in some samples, they take the next edge beyond,
+// and a line through all of them would fall between the two. nullopt when fewer
 // than 5 samples found an edge.
 std::optional<EdgeLine> fitEdgeLine(const PinholeView& photo, const EdgeSearch& search);
 

@@ -26,9 +26,19 @@ struct RefinedSection {
 // vanishing point and left and right through the vertical one, and intersects them.
 // A side with no edge keeps its coarse line and gives its corners low confidence.
 // `minRelativeStrength` as in EdgeSearch.
+//
+// `inner`: the section's own edges lie on its inside (towards `point`, the vanishing
+// point) of the surfaces' beyond it, and those sides take the edge farthest inwards
+// (EdgeSearch::innerPoint): the top and bottom, or all four. A far wall's foot borders
+// the floor, whose tile joints run parallel to it a pixel or three away; its sides
+// border the walls, where clutter and doorways make inner edges of their own.
+struct InnerEdges {
+  glm::dvec2 point{0.0};
+  bool leftAndRight = true;
+};
 RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, glm::dvec3 horizontal,
                                   glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
-                                  double minRelativeStrength = 0.5);
+                                  double minRelativeStrength = 0.5, std::optional<InnerEdges> inner = {});
 
 struct RefinedBoundary {
   glm::dvec2 direction{1, 0};  // unit, from the vanishing point outwards

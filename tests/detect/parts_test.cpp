@@ -60,6 +60,33 @@ cv::Mat slantedEdge(glm::dvec3 line) {
   return img;
 }
 
+// A far wall's foot on a checker floor (corridor_a): the wall (grey) ends at row 100;
+// beyond it the floor's first row of tiles, 3 px deep, alternates dark (a strong edge
+// at the foot) with a light one nearly the wall's shade (a faint edge), and the next
+// row's joint at row 103 is strong everywhere. Half the samples take that joint; the
+// fit must still follow the foot, not fall between the two.
+TEST(DetectParts, EdgeFitBesideAStrongerEdgeKeepsTheInnerOne) {
+  cv::Mat img(200, 320, CV_8UC3, cv::Scalar(170, 175, 170));
+  for (int x = 0; x < img.cols; ++x) {
+    const bool dark = (x / 40) % 2 == 0;
+    img(cv::Rect(x, 100, 1, 3)).setTo(dark ? cv::Scalar(90, 80, 80) : cv::Scalar(200, 205, 205));
+    img(cv::Rect(x, 103, 1, 97)).setTo(dark ? cv::Scalar(200, 205, 205) : cv::Scalar(90, 80, 80));
+  }
+  cv::GaussianBlur(img, img, {0, 0}, 0.5);
+  EdgeSearch search;
+  search.from = {20, 100.5};
+  search.to = {300, 100.5};
+  search.through = glm::dvec3(1, 0, 0);  // horizontal
+  search.searchPx = 4;
+  search.innerPoint = glm::dvec2(160, 40);  // the wall's side
+  auto fit = fitEdgeLine(PinholeView(img), search);
+  ASSERT_TRUE(fit.has_value());
+  // The foot lies between rows 99 and 100: v = 99.5.
+  EXPECT_NEAR(-fit->line.z / fit->line.y, 99.5, 0.25);
+  // Where the tile is light the foot is too faint beside the joint: half the samples.
+  EXPECT_GT(fit->coverage, 0.45);
+}
+
 TEST(DetectParts, EdgeFitIsSubPixel) {
   const glm::dvec2 p(160.3, 120.0), dir = glm::normalize(glm::dvec2(0.3, 1.0));
   const glm::dvec3 truth = lineThrough(p, p + dir);
