@@ -35,7 +35,8 @@ struct Case {
 
 std::vector<Case> distortedCases() {
   std::vector<Case> out;
-  for (const char* scene : {"corridor_a", "corridor_f", "corridor_h"}) {
+  for (const char* scene :
+       {"corridor_a", "corridor_b", "corridor_c", "corridor_d", "corridor_e", "corridor_f", "corridor_g", "corridor_h"}) {
     out.push_back({std::string(scene) + "_k010", -0.1});
     out.push_back({std::string(scene) + "_k020", -0.2});
   }
