@@ -118,9 +118,10 @@ std::optional<glm::dvec3> fitLineThrough(glm::dvec3 q, const std::vector<EdgePoi
 // three away (a checker floor's next joint beyond the far wall's foot, a band's second
 // edge), and where the first is faint the samples split between the two: a least-squares
 // line through all of them falls between, on neither. So the points are grouped by the
-// line through `search.through` each lies on (within kModeHalfWidthPx), and the fit
-// starts from one group: of those holding at least kMinModeShare of the points, the
-// one farthest towards `search.innerPoint`.
+// line through `search.through` each lies on (within kModeHalfWidthPx). When two or
+// more groups, kDistinctEdgesPx apart, each hold kMinModeShare of the points, the fit
+// starts from the one farthest towards `search.innerPoint` (`split`); else from all
+// the points, as any other fit.
 constexpr double kModeHalfWidthPx = 0.5;
 constexpr double kMinModeShare = 0.25;
 constexpr double kDistinctEdgesPx = 1.5;

@@ -64,8 +64,8 @@ struct EdgeSearch {
 // parabola through the response), then
 // fits the line through `through` that minimises the squared distances, with
 // outliers (texture edges, occlusions) dropped by a MAD rule over the points it
-// follows. With `innerPoint`, the fit starts from the innermost line that at least a
-// quarter of the samples' edges lie on (edges 1.5 px or more apart are distinct): where
+// follows. With `innerPoint`, when the samples' edges split between lines 1.5 px or
+// more apart that a quarter of them each lie on, the fit starts from the innermost: where
 // the section's own edge is faint in some samples, they take the next edge beyond,
 // and a line through all of them would fall between the two. nullopt when fewer
 // than 5 samples found an edge.
