@@ -102,6 +102,21 @@ MUTATIONS = [
         "glm::dvec3 x(xn.x / scale + centroid.x * xn.z,",
         "glm::dvec3 x(xn.x / scale - centroid.x * xn.z,",
         "the vanishing-point fit undoes the normalisation with the wrong sign in x"),
+    Mutation(
+        "pinhole-view-ignores-lens", "metrology/detect/edge_fit.cpp",
+        "  if (lens_) p = distortPixel(*lens_, p);\n",
+        "",
+        "detect's sub-pixel fits read a photo taken through a lens as if it were a pinhole's"),
+    Mutation(
+        "edge-fit-outermost", "metrology/detect/edge_fit.cpp",
+        "    const bool better = !chosen || inward * centre > inward * *chosen;\n",
+        "    const bool better = !chosen || inward * centre < inward * *chosen;\n",
+        "where a far wall's foot runs beside a floor joint, the fit starts from the outer edge"),
+    Mutation(
+        "working-lens-unscaled", "metrology/detect/working_image.cpp",
+        "  scaled.focalPx = lens.focalPx * work.scale;\n",
+        "  scaled.focalPx = lens.focalPx;\n",
+        "the working copy is undistorted with the full-resolution focal length (too little bend)"),
 ]
 
 BY_NAME = {m.name: m for m in MUTATIONS}

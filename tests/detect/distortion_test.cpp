@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "metrology/detect/detect.h"
 #include "metrology/measure.h"
@@ -129,6 +130,42 @@ TEST_P(DistortedGroundTruth, DetectFindsTheLensAndMeasuresWithinHalfAPercent) {
 
 INSTANTIATE_TEST_SUITE_P(Lens, DistortedGroundTruth, ::testing::ValuesIn(distortedCases()),
                          [](const auto& info) { return info.param.name; });
+
+// The same photo three times larger (2400x1800): detection then runs on a working copy
+// at half its size, undistorted through the lens scaled to it, and the sub-pixel fits
+// read the large photo through the lens. It must measure as the photo does.
+TEST(DistortedGroundTruth, ALargePhotoThroughTheLensMeasuresAsTheSmallOne) {
+  constexpr double kScale = 3.0;
+  for (const char* name : {"corridor_a_k020", "corridor_f_k020"}) {
+    const DistortedTruth t = loadDistorted(name);
+    const cv::Mat small = cv::imread(t.shot.shot.imagePath, cv::IMREAD_COLOR);
+    ASSERT_FALSE(small.empty()) << name;
+    cv::Mat large;
+    cv::resize(small, large, {}, kScale, kScale, cv::INTER_CUBIC);
+    // Pixel centres: u_large = 3 (u + 0.5) - 0.5; k1 is normalised by the focal length.
+    const auto toLarge = [&](glm::dvec2 p) { return kScale * (p + 0.5) - 0.5; };
+    DetectOptions options;
+    options.focalPx = kScale * t.answers.focalPx;
+    options.principalPointPx = toLarge(t.answers.principalPointPx);
+    auto d = detectCorridor(large, options);
+    ASSERT_TRUE(d.ok()) << d.message();
+    ASSERT_TRUE(d->found) << name;
+    Shot shot = t.shot.shot;
+    shot.imageWidth = large.cols;
+    shot.imageHeight = large.rows;
+    shot.focalPx = *options.focalPx;
+    shot.principalPointPx = options.principalPointPx;
+    for (int k = 0; k < kCornerCount; ++k) shot.cornersPx[k] = d->corners[k].px;
+    shot.distortion = d->distortion;
+    auto m = measureCorridor(shot);
+    ASSERT_TRUE(m.ok()) << m.message();
+    const Errors e = errorsOf(*m, t.answers);
+    std::printf("[distortion] %-18s x3 (2400x1800) detect+measure: %+6.3f %+6.3f %+6.3f %% (k1 %.4f)\n", name, e.width,
+                e.height, e.length, d->distortion.k1);
+    EXPECT_NEAR(d->distortion.k1, -0.2, 0.02) << name;
+    EXPECT_LT(e.worst(), 0.5) << name << ": width " << e.width << "% height " << e.height << "% length " << e.length << "%";
+  }
+}
 
 // The ground truth without distortion: detect sees none, so its shots and everything
 // made from them stay what they were (no distortion field).
