@@ -206,7 +206,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   // Its top and bottom take their innermost edge: a floor's tile joint a pixel or three
   // beyond the foot is often the stronger, and blur merges the two.
   const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx,
-                                                stepHalfWidthPx, 0.5, InnerEdges{vp, false});
+                                                stepHalfWidthPx, 0.5, vp);
   for (int side = 0; side < 4; ++side) {
     if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
       static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
@@ -297,6 +297,11 @@ const char* nearDepthName(NearDepth depth) {
 
 namespace {
 
+// The focal length given, else the 28 mm-equivalent default.
+double givenOrDefaultFocal(const DetectOptions& options, cv::Size size) {
+  return options.focalPx.value_or(kDefaultFocalOverLongSide * std::max(size.width, size.height));
+}
+
 // Detection on the pinhole image `photo` (the photo itself, or the photo seen
 // through its lens), whose working copy is `work` and its segments `segments`.
 Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
@@ -309,7 +314,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
 
   // Vanishing points, and the focal length when it is not given.
   d.focalSource = options.focalPx ? FocalSource::kGiven : FocalSource::kDefault;
-  d.focalPx = options.focalPx.value_or(kDefaultFocalOverLongSide * std::max(size.width, size.height));
+  d.focalPx = givenOrDefaultFocal(options, size);
   auto frame = frameWithFocal(segments, d.focalPx, pp, size);
   if (!frame) return notFound(d, frame.message());
   if (!options.focalPx) {
@@ -423,7 +428,7 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   const double minSegmentPx = kMinSegmentLengthOfDiagonal * diagonal;
   const WorkingImage work = makeWorkingImage(photo, std::max(kMinPhotoSidePx, options.workingMaxSidePx));
   const std::vector<LineSegment> segments = detectLineSegments(work.gray, work.scale, minSegmentPx);
-  const double focalPx = options.focalPx.value_or(kDefaultFocalOverLongSide * std::max(size.width, size.height));
+  const double focalPx = givenOrDefaultFocal(options, size);
   const std::optional<PlumbLineFit> lens =
       options.estimateDistortion ? fitPlumbLines(work, segments, pp, focalPx) : std::nullopt;
   if (!lens) return findCorridor(PinholeView(photo), work, segments, options, pp);

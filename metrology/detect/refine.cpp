@@ -31,7 +31,7 @@ double cornerConfidence(const EdgeLine& a, bool fittedA, const EdgeLine& b, bool
 
 RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, glm::dvec3 horizontal,
                                   glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
-                                  double minRelativeStrength, std::optional<InnerEdges> inner) {
+                                  double minRelativeStrength, std::optional<glm::dvec2> innerPoint) {
   RefinedSection out;
   std::array<glm::dvec3, 4> lines{};
   for (int side = 0; side < 4; ++side) {
@@ -44,8 +44,7 @@ RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, 
     search.searchPx = searchPx;
     search.stepHalfWidthPx = stepHalfWidthPx;
     search.minRelativeStrength = minRelativeStrength;
-    const bool topOrBottom = side == kTopSide || side == kBottomSide;
-    if (inner && (topOrBottom || inner->leftAndRight)) search.innerPoint = inner->point;
+    if (side == kTopSide || side == kBottomSide) search.innerPoint = innerPoint;
     auto fit = fitEdgeLine(photo, search);
     out.sideFitted[side] = fit.has_value();
     if (fit) {

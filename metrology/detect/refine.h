@@ -27,18 +27,13 @@ struct RefinedSection {
 // A side with no edge keeps its coarse line and gives its corners low confidence.
 // `minRelativeStrength` as in EdgeSearch.
 //
-// `inner`: the section's own edges lie on its inside (towards `point`, the vanishing
-// point) of the surfaces' beyond it, and those sides take the edge farthest inwards
-// (EdgeSearch::innerPoint): the top and bottom, or all four. A far wall's foot borders
-// the floor, whose tile joints run parallel to it a pixel or three away; its sides
-// border the walls, where clutter and doorways make inner edges of their own.
-struct InnerEdges {
-  glm::dvec2 point{0.0};
-  bool leftAndRight = true;
-};
+// `innerPoint` (the vanishing point): the top and bottom take the edge farthest towards
+// it (EdgeSearch::innerPoint). A far wall's foot borders the floor, whose tile joints run
+// parallel to it a pixel or three away; its sides border the walls, where clutter and
+// doorways make inner edges of their own, so they keep the edge nearest the coarse line.
 RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, glm::dvec3 horizontal,
                                   glm::dvec3 vertical, double searchPx, double stepHalfWidthPx,
-                                  double minRelativeStrength = 0.5, std::optional<InnerEdges> inner = {});
+                                  double minRelativeStrength = 0.5, std::optional<glm::dvec2> innerPoint = {});
 
 struct RefinedBoundary {
   glm::dvec2 direction{1, 0};  // unit, from the vanishing point outwards
