@@ -195,9 +195,17 @@ void synthesize(CorridorModel& model, Surface surface, double extensionM, const 
     if (!(p.z > 1e-9)) return std::nullopt;
     return glm::dvec2(p.x / p.z, p.y / p.z);
   };
-  model.synthesis[static_cast<int>(surface)] =
-      synthesizeSurface(canvas, photoOf, cv::Size(model.photoWidth, model.photoHeight), SynthesisOptions{options.detail, true});
-  tex.image = imageFromBgr(fromDepthMajor(canvas(cv::Rect(extension, 0, depthMajor.cols, depthMajor.rows)), surface));
+  cv::Mat detail;
+  model.synthesis[static_cast<int>(surface)] = synthesizeSurface(
+      canvas, photoOf, cv::Size(model.photoWidth, model.photoHeight), SynthesisOptions{options.detail, true}, &detail);
+  const cv::Rect photoPart(extension, 0, depthMajor.cols, depthMajor.rows);
+  tex.image = imageFromBgr(fromDepthMajor(canvas(photoPart), surface));
+  if (!detail.empty()) {
+    cv::Mat codes = fromDepthMajor(detail(photoPart), surface), bgr;
+    cv::cvtColor(codes, bgr, cv::COLOR_GRAY2BGR);
+    tex.detail = imageFromBgr(bgr);
+    tex.detail.grey = true;
+  }
   if (extension > 0) {
     SurfaceTexture strip;
     strip.rect = stripTo(surface, model.box, model.photoNearM, model.untexturedNearM);
@@ -328,6 +336,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       // Clamp: a repeat would bleed the opposite edge into the seams between planes.
       texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
       texture->sourceFromTexCoord = tex.sourceFromTexCoord;
+      if (!tex.detail.empty()) texture->detail = std::make_shared<engine::Image>(tex.detail);
       auto appearance = std::make_shared<engine::Appearance>();
       appearance->texture = texture;
       if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));

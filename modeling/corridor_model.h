@@ -31,11 +31,10 @@ struct ModelOptions {
   // synthesized where the photo saw a surface coarsely, and texture where it did not see
   // it, with the corridor closed behind the camera (modeling/synthesis.h).
   bool photoOnly = false;
-  // With synthesis, also add detail where the photo saw a surface coarsely (`build
-  // --detail`). Off by default: the renderer samples a texture cut from a photo at the
-  // photo's own resolution (scene.frag), so from the photo's camera the added detail
-  // shows unfiltered and the reprojection loses 1-14 dB (corridor_a: 44.8 to 30.9 dB).
-  bool detail = false;
+  // With synthesis, also add detail where the photo saw a surface coarsely, as each
+  // texture's detail layer (engine/scene/texture_detail.h: photowalk's renderer shows it
+  // only where a view comes closer than the photo was taken); false: `build --no-detail`.
+  bool detail = true;
 };
 
 // The part of one surface that has a texture, and the texture.
@@ -45,6 +44,7 @@ struct SurfaceTexture {
   double pxPerM = 0;
   double coveredFraction = 0;  // share of the texture the photo shows (the rest is filled)
   glm::mat3 sourceFromTexCoord{1.0f};  // engine::Texture::sourceFromTexCoord
+  engine::Image detail;  // engine::Texture::detail (grey, the image's size); empty: none
 };
 
 struct CorridorModel {

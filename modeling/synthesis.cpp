@@ -9,6 +9,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "engine/scene/texture_detail.h"
+
 namespace pw::modeling {
 namespace {
 
@@ -18,12 +20,12 @@ constexpr int kCell = 16;               // the footprint is evaluated once per c
 constexpr double kSharpSpread = 2.5;
 constexpr double kCoarseSpread = 1.4;  // times the exemplar's own
 constexpr double kBlurPerSpread = 0.45;  // Gaussian sigma of a photo pixel's blur, per texel of its spread
-// How much of the exemplar's detail a tile gets: the phase found from the coarse
-// evidence is not exact, and detail out of phase costs more than missing detail (half:
-// no scene's novel views lose more than 0.4 dB against the photo-only model, and the
-// high-frequency energy doubles); surfaces that do not repeat, whose detail can only
-// be plausible, get less again.
-constexpr double kDetailGain = 0.5;
+// How much of the exemplar's detail a tile gets: a lattice continued from the exemplar
+// puts it in phase to a fraction of a texel, yet the photo's own coarse view of the tile
+// keeps some of it (0.85 brings the high-frequency energy at mid-corridor to POV-Ray's
+// 0.73; 1.0 costs 0.4 dB, 0.7 falls short at 0.58: novel_view_bench); surfaces that do
+// not repeat, whose detail can only be plausible, get less.
+constexpr double kDetailGain = 0.85;
 constexpr double kRandomDetailGain = 0.7;
 constexpr int kTile = 48;
 constexpr int kStride = 36;
@@ -108,8 +110,9 @@ double leastSpread(const Grid& g) {
   return least;
 }
 
-// The exemplar: the longest run of cell columns where nearly every cell is sharp.
-std::pair<int, int> exemplarColumns(const Grid& g, int width, double least) {
+// The exemplar: the longest run of cell columns where nearly every cell is at most
+// `limit` times the least spread.
+std::pair<int, int> sharpColumns(const Grid& g, int width, double least, double limit) {
   int best0 = 0, best1 = 0, run0 = -1;
   for (int cx = 0; cx <= g.cols; ++cx) {
     bool sharp = false;
@@ -117,7 +120,7 @@ std::pair<int, int> exemplarColumns(const Grid& g, int width, double least) {
       int n = 0;
       for (int cy = 0; cy < g.rows; ++cy) {
         const Cell& c = g.at(cx, cy);
-        n += c.covered && sharpness(c) <= kSharpSpread * least;
+        n += c.covered && sharpness(c) <= limit * least;
       }
       sharp = n >= 0.5 * g.rows;
     }
@@ -128,6 +131,19 @@ std::pair<int, int> exemplarColumns(const Grid& g, int width, double least) {
     }
   }
   return {best0 * kCell, std::min(width, best1 * kCell)};
+}
+
+// The sharp columns, kSharpSpread times the least spread; a wall the photo saw at a
+// grazing angle is sharp over a few cells only, so the limit grows until the exemplar
+// holds a few tiles (detail still goes only where the photo saw 1.4 times coarser).
+constexpr int kMinExemplarColumns = 4 * kTile;
+std::pair<int, int> exemplarColumns(const Grid& g, int width, double least) {
+  std::pair<int, int> columns;
+  for (double limit = kSharpSpread; limit <= 4 * kSharpSpread; limit *= 1.5) {
+    columns = sharpColumns(g, width, least, limit);
+    if (columns.second - columns.first >= std::min(kMinExemplarColumns, width / 4)) break;
+  }
+  return columns;
 }
 
 // The period along x of the exemplar's fine structure (texels, sub-texel), 0 when it
@@ -182,11 +198,30 @@ double periodAlongX(const cv::Mat1f& lum, const cv::Mat1b& shown) {
   double best = 0;
   for (int lag = lo; lag < hi; ++lag) best = std::max(best, r[lag]);
   if (best < 0.4) return 0;
+  // The peak nearest `lag` (within `reach`), to a fraction of a texel.
+  const auto peakNear = [&](double lag, int reach) -> std::optional<double> {
+    int at = -1;
+    for (int l = std::max(1, static_cast<int>(std::lround(lag)) - reach);
+         l <= std::min(n - 2, static_cast<int>(std::lround(lag)) + reach); ++l) {
+      if (r[l] >= r[l - 1] && r[l] >= r[l + 1] && (at < 0 || r[l] > r[at])) at = l;
+    }
+    if (at < 0) return std::nullopt;
+    const double a = r[at - 1], b = r[at], c = r[at + 1], d = a - 2 * b + c;
+    return at + (std::abs(d) > 1e-12 ? 0.5 * (a - c) / d : 0.0);
+  };
   // The fundamental: the first local maximum nearly as strong as the best.
   for (int lag = lo; lag < hi; ++lag) {
     if (r[lag] >= 0.85 * best && r[lag] >= r[lag - 1] && r[lag] >= r[lag + 1]) {
-      const double a = r[lag - 1], b = r[lag], c = r[lag + 1], d = a - 2 * b + c;
-      return lag + (std::abs(d) > 1e-12 ? 0.5 * (a - c) / d : 0.0);
+      double period = *peakNear(lag, 0);
+      // Refined at its multiples, as far as the overlap leaves a clear peak: the error of
+      // one peak's position is divided by the multiple, and a lattice continued for tens
+      // of periods beyond the exemplar needs the period to a small fraction of a texel.
+      for (int k = 2; k * period < 0.75 * n; ++k) {
+        const auto peak = peakNear(k * period, std::max(1, static_cast<int>(0.15 * period)));
+        if (!peak || r[static_cast<int>(std::lround(*peak))] < 0.5 * best) break;
+        period = *peak / k;
+      }
+      return period;
     }
   }
   return 0;
@@ -200,8 +235,9 @@ double spreadOfLevel(int q) { return std::pow(2.0, q / 2.0); }
 // The exemplar blurred as the photo blurs a cell of spread (2^(qx/2), 2^(qy/2)), with
 // the same shrunk by (kx, ky) for matching.
 struct Blurred {
-  cv::Mat3f color;  // the exemplar, blurred
-  cv::Mat1f small;  // its luminance, shrunk
+  cv::Mat1f blurred;  // the exemplar's luminance, blurred
+  cv::Mat1f detail;   // the exemplar's luminance less its blur: what the photo lost there
+  cv::Mat1f small;    // the blurred luminance, shrunk
   int kx = 1, ky = 1;
 };
 
@@ -265,13 +301,15 @@ std::vector<float> columnMeans(const cv::Mat1f& lum, const cv::Mat1b& shown) {
   return means;
 }
 
-void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x0, int x1, double period,
-               SynthesisStats& stats) {
-  const int width = texture.cols, height = texture.rows;
+// The detail, as the detail layer's codes (engine/scene/texture_detail.h): per texel,
+// the ratio of the linear luminance with the matches' detail (luminance, sRGB-encoded,
+// added to each channel) added to the texel's own. `lum`: the texture's luminance.
+void addDetail(const cv::Mat3b& base, const cv::Mat1f& lum, const Grid& grid, int x0, int x1, double period,
+               cv::Mat1b& codes, SynthesisStats& stats) {
+  const int width = base.cols, height = base.rows;
   const int exemplarWidth = x1 - x0;
   if (exemplarWidth < kTile + 8 || height < kTile) return;
   const glm::dvec2 own = exemplarSpread(grid, x0, x1);
-  const cv::Mat3f exemplar = texture(cv::Range::all(), cv::Range(x0, x1)).clone();
   const cv::Mat1f exemplarLum = lum(cv::Range::all(), cv::Range(x0, x1));
   cv::Mat1f means;
   cv::reduce(exemplarLum, means, 0, cv::REDUCE_AVG);
@@ -285,17 +323,24 @@ void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x
     if (it != cache.end()) return it->second;
     Blurred b;
     const double sx = spreadOfLevel(qx), sy = spreadOfLevel(qy);
-    cv::GaussianBlur(exemplar, b.color, {0, 0}, kBlurPerSpread * sx, kBlurPerSpread * sy, cv::BORDER_REFLECT);
-    cv::Mat1f l;
+    cv::Mat1f& l = b.blurred;
     cv::GaussianBlur(exemplarLum, l, {0, 0}, kBlurPerSpread * sx, kBlurPerSpread * sy, cv::BORDER_REFLECT);
+    b.detail = exemplarLum - l;
     b.kx = std::max(2, static_cast<int>(sx / 2));
     b.ky = std::max(2, static_cast<int>(sy / 2));
     cv::resize(l, b.small, {std::max(1, l.cols / b.kx), std::max(1, l.rows / b.ky)}, 0, 0, cv::INTER_AREA);
     return cache.emplace(std::make_pair(qx, qy), std::move(b)).first->second;
   };
 
-  cv::Mat3f detail = cv::Mat3f::zeros(texture.size());
-  cv::Mat1f weight = cv::Mat1f::zeros(texture.size());
+  // A coarse tile's luminance shrunk as the exemplar's is for matching.
+  const auto shrunkTile = [&](const Blurred& b, int tx, int ty) {
+    cv::Mat1f tile;
+    cv::resize(lum(cv::Rect(tx, ty, kTile, kTile)), tile, {std::max(1, kTile / b.kx), std::max(1, kTile / b.ky)}, 0, 0,
+               cv::INTER_AREA);
+    return tile;
+  };
+  cv::Mat1f detail = cv::Mat1f::zeros(base.size());
+  cv::Mat1f weight = cv::Mat1f::zeros(base.size());
   std::vector<float> window(kTile);
   for (int i = 0; i < kTile; ++i) window[i] = static_cast<float>(std::pow(std::sin(CV_PI * (i + 0.5) / kTile), 2));
   // Tiles from the exemplar outwards, so that a periodic surface's phase, corrected
@@ -310,7 +355,6 @@ void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x
   });
   const double centre = x0 + 0.5 * (exemplarWidth - kTile);
   for (int ty = 0; ty + kTile <= height; ty += std::min(kStride, std::max(1, height - kTile - ty))) {
-    double shiftNear = 0, shiftFar = 0;  // phase corrections found so far, on either side
     for (int tx : columns) {
       const Cell& c = grid.at(std::min(grid.cols - 1, (tx + kTile / 2) / kCell), std::min(grid.rows - 1, (ty + kTile / 2) / kCell));
       if (!c.covered || sharpness(c) < kCoarseSpread * std::max(own.x, own.y)) continue;
@@ -318,94 +362,96 @@ void addDetail(cv::Mat3f& texture, const cv::Mat1f& lum, const Grid& grid, int x
       const int qx = level(std::sqrt(std::max(1.0, c.spreadX * c.spreadX - own.x * own.x)));
       const int qy = level(std::sqrt(std::max(1.0, c.spreadY * c.spreadY - own.y * own.y)));
       const Blurred& b = blurredFor(qx, qy);
-      double& shift = tx < x0 ? shiftNear : shiftFar;
-      // Where to look: periodic, whole periods from the tile (and the phase found so
-      // far); else around a position of its own.
-      double predicted;
-      int halfWindow;
-      if (period > 0) {
-        predicted = tx + shift - std::round((tx + shift - centre) / period) * period - x0;
-        halfWindow = static_cast<int>(std::ceil(0.5 * period));
-      } else {
-        predicted = static_cast<double>((static_cast<unsigned>(tx) * 2654435761u + static_cast<unsigned>(ty) * 40503u) %
-                                        static_cast<unsigned>(exemplarWidth - kTile));
-        halfWindow = 48;
-      }
-      const int lo = std::clamp(static_cast<int>(predicted) - halfWindow, 0, exemplarWidth - kTile);
-      const int hi = std::clamp(static_cast<int>(predicted) + halfWindow, lo, exemplarWidth - kTile);
-      const int radius = std::clamp(static_cast<int>(std::lround(2 * spreadOfLevel(qy))), 2, 12);
-      const int r0 = std::max(0, ty - radius), r1 = std::min(height, ty + kTile + radius);
-      cv::Mat1f tile;
-      cv::resize(lum(cv::Rect(tx, ty, kTile, kTile)), tile, {std::max(1, kTile / b.kx), std::max(1, kTile / b.ky)}, 0, 0,
-                 cv::INTER_AREA);
-      const int sc0 = lo / b.kx, sc1 = std::min(b.small.cols, (hi + kTile) / b.kx);
-      const int sr0 = r0 / b.ky, sr1 = std::min(b.small.rows, (r1 + b.ky - 1) / b.ky);
-      cv::Scalar mean, stddev;
-      cv::meanStdDev(tile, mean, stddev);
-      int sx = std::clamp(static_cast<int>(std::lround(predicted)), 0, exemplarWidth - kTile);
+      // Where to take the detail from. Periodic: the lattice continued, the same phase
+      // whole periods away (the rectified plane is metric, so the period holds along
+      // the whole surface; the coarse evidence was tried for the phase and moved it
+      // off more often than on), to a fraction of a texel. Else: the exemplar's tile the
+      // coarse one matches best, blurred as the photo blurred it.
+      double sourceX;
       int sy = ty;
-      double gain = period > 0 ? kDetailGain : kDetailGain * kRandomDetailGain;
-      if (stddev[0] >= 0.75 && sr1 - sr0 >= tile.rows && sc1 - sc0 >= tile.cols) {
-        cv::Mat1f score;
-        cv::matchTemplate(b.small(cv::Range(sr0, sr1), cv::Range(sc0, sc1)), tile, score, cv::TM_CCOEFF_NORMED);
-        double best;
-        cv::Point at;
-        cv::minMaxLoc(score, nullptr, &best, nullptr, &at);
-        const int foundX = std::clamp((sc0 + at.x) * b.kx, 0, exemplarWidth - kTile);
-        if (period > 0) {
-          // Clear evidence moves the phase; faint evidence leaves the lattice's.
-          if (best > 0.6 && sc1 - sc0 - tile.cols >= 2) {
-            shift += foundX - predicted;
-            sx = foundX;
-            sy = std::clamp((sr0 + at.y) * b.ky, 0, height - kTile);
-          }
-        } else {
+      double gain = kDetailGain;
+      if (period > 0) {
+        sourceX = tx - std::round((tx - centre) / period) * period - x0;
+        const double last = exemplarWidth - kTile - 1.0;  // room for the sub-texel shift
+        while (sourceX > last) sourceX -= period;
+        while (sourceX < 0) sourceX += period;
+        for (int k = 0; k < 4 && !clean(static_cast<int>(sourceX)); ++k) {  // whole periods away from odd columns
+          if (sourceX + period <= last && clean(static_cast<int>(sourceX + period))) sourceX += period;
+          else if (sourceX - period >= 0) sourceX -= period;
+        }
+        if (sourceX > last) continue;  // an exemplar shorter than a tile and a period
+      } else {
+        gain *= kRandomDetailGain;
+        const int predicted = static_cast<int>((static_cast<unsigned>(tx) * 2654435761u + static_cast<unsigned>(ty) * 40503u) %
+                                               static_cast<unsigned>(exemplarWidth - kTile));
+        constexpr int kHalfWindow = 48;
+        const int lo = std::clamp(predicted - kHalfWindow, 0, exemplarWidth - kTile);
+        const int hi = std::clamp(predicted + kHalfWindow, lo, exemplarWidth - kTile);
+        const int radius = std::clamp(static_cast<int>(std::lround(2 * spreadOfLevel(qy))), 2, 12);
+        const int r0 = std::max(0, ty - radius), r1 = std::min(height, ty + kTile + radius);
+        const cv::Mat1f tile = shrunkTile(b, tx, ty);
+        const int sc0 = lo / b.kx, sc1 = std::min(b.small.cols, (hi + kTile) / b.kx);
+        const int sr0 = r0 / b.ky, sr1 = std::min(b.small.rows, (r1 + b.ky - 1) / b.ky);
+        cv::Scalar mean, stddev;
+        cv::meanStdDev(tile, mean, stddev);
+        sourceX = predicted;
+        if (stddev[0] >= 0.75 && sr1 - sr0 >= tile.rows && sc1 - sc0 >= tile.cols) {
+          cv::Mat1f score;
+          cv::matchTemplate(b.small(cv::Range(sr0, sr1), cv::Range(sc0, sc1)), tile, score, cv::TM_CCOEFF_NORMED);
+          double best;
+          cv::Point at;
+          cv::minMaxLoc(score, nullptr, &best, nullptr, &at);
           gain *= std::clamp((best - 0.3) / 0.4, 0.0, 1.0);
-          sx = foundX;
+          sourceX = std::clamp((sc0 + at.x) * b.kx, 0, exemplarWidth - kTile);
           sy = std::clamp((sr0 + at.y) * b.ky, 0, height - kTile);
         }
+        if (!clean(static_cast<int>(sourceX))) continue;
       }
-      if (period > 0) {
-        for (int k = 0; k < 4 && !clean(sx); ++k) {  // whole periods away from odd columns
-          const int step = static_cast<int>(std::lround(period));
-          sx = sx + step <= exemplarWidth - kTile && clean(sx + step) ? sx + step
-               : sx - step >= 0                                      ? sx - step
-                                                                     : sx;
-        }
-      }
-      if (!clean(sx) || gain <= 0) continue;
-      sy = std::clamp(sy, 0, height - kTile);
-      const cv::Rect source(sx, sy, kTile, kTile);
+      if (gain <= 0) continue;
       // The match's contrast against the tile's: shading differs along a corridor.
-      cv::Scalar sourceMean, sourceStd;
-      cv::Mat1f sourceLum;
-      cv::cvtColor(b.color(source), sourceLum, cv::COLOR_BGR2GRAY);
-      cv::meanStdDev(sourceLum, sourceMean, sourceStd);
-      const double contrast = sourceStd[0] > 0.5 && stddev[0] >= 0.75 ? std::clamp(stddev[0] / sourceStd[0], 0.5, 1.5) : 1.0;
+      const int sx = static_cast<int>(sourceX);
+      cv::Scalar tileMean, tileStd, sourceMean, sourceStd;
+      cv::meanStdDev(shrunkTile(b, tx, ty), tileMean, tileStd);
+      cv::meanStdDev(b.blurred(cv::Rect(sx, sy, kTile, kTile)), sourceMean, sourceStd);
+      const double contrast = sourceStd[0] > 0.5 && tileStd[0] >= 0.75 ? std::clamp(tileStd[0] / sourceStd[0], 0.5, 1.5) : 1.0;
       const float k = static_cast<float>(gain * contrast);
+      cv::Mat1f patch;
+      cv::getRectSubPix(b.detail, {kTile, kTile}, cv::Point2f(static_cast<float>(sourceX + 0.5 * (kTile - 1)),
+                                                              static_cast<float>(sy + 0.5 * (kTile - 1))), patch);
       for (int y = 0; y < kTile; ++y) {
-        const cv::Vec3f* sharp = exemplar.ptr<cv::Vec3f>(sy + y) + sx;
-        const cv::Vec3f* blur = b.color.ptr<cv::Vec3f>(sy + y) + sx;
-        cv::Vec3f* d = detail.ptr<cv::Vec3f>(ty + y) + tx;
+        const float* from = patch.ptr<float>(y);
+        float* d = detail.ptr<float>(ty + y) + tx;
         float* w = weight.ptr<float>(ty + y) + tx;
         for (int x = 0; x < kTile; ++x) {
           const float wx = window[x] * window[y];
-          d[x] += (sharp[x] - blur[x]) * (k * wx);
+          d[x] += from[x] * (k * wx);
           w[x] += wx;
         }
       }
     }
   }
   int added = 0;
+  codes.create(base.size());
+  codes.setTo(engine::kNoDetail);
+  // Linear light of an sRGB-encoded BGR texel (0..255) with `add` on each channel.
+  const auto luminance = [](const cv::Vec3b& bgr, float add) {
+    const auto lin = [add](uint8_t v) {
+      return engine::linearOfSrgbByte(static_cast<uint8_t>(std::clamp(v + add + 0.5f, 0.0f, 255.0f)));
+    };
+    return 0.0722f * lin(bgr[0]) + 0.7152f * lin(bgr[1]) + 0.2126f * lin(bgr[2]);
+  };
   for (int y = 0; y < height; ++y) {
-    cv::Vec3f* t = texture.ptr<cv::Vec3f>(y);
-    const cv::Vec3f* d = detail.ptr<cv::Vec3f>(y);
+    const cv::Vec3b* b = base.ptr<cv::Vec3b>(y);
+    const float* d = detail.ptr<float>(y);
     const float* w = weight.ptr<float>(y);
+    uint8_t* code = codes.ptr<uint8_t>(y);
     for (int x = 0; x < width; ++x) {
-      if (w[x] > 1e-3f) {
-        t[x] += d[x] * (1.0f / std::max(w[x], 0.25f));
-        ++added;
-      }
+      if (w[x] <= 1e-3f) continue;
+      const float own = luminance(b[x], 0.0f);
+      if (!(own > 1e-4f)) continue;  // black: no ratio brightens it
+      const float ratio = luminance(b[x], d[x] / std::max(w[x], 0.25f)) / own;
+      code[x] = std::min(engine::detailCode(ratio), engine::detailCodeLimit(b[x].val));
+      added += code[x] != engine::kNoDetail;
     }
   }
   stats.detailFraction = double(added) / (double(width) * height);
@@ -489,8 +535,9 @@ void fill(cv::Mat3b& texture, const cv::Mat1f& lum, const cv::Mat1b& shown, doub
 }  // namespace
 
 SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, cv::Size photoSize,
-                                 const SynthesisOptions& options) {
+                                 const SynthesisOptions& options, cv::Mat* detail) {
   SynthesisStats stats;
+  if (detail) detail->release();
   if (texture.empty() || texture.type() != CV_8UC3) return stats;
   const Grid grid = footprints(texture.size(), photoOf, photoSize);
   const double least = leastSpread(grid);
@@ -509,11 +556,21 @@ SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, 
   // Filled first, so that the exemplar's own gaps hold texture before it lends detail.
   if (options.fill) fill(pixels, lum, shown, period, exemplar ? x1 : texture.cols, stats);
   if (options.detail && exemplar) {
-    cv::Mat3f work;
-    pixels.convertTo(work, CV_32FC3);
-    cv::cvtColor(work, lum, cv::COLOR_BGR2GRAY);
-    addDetail(work, lum, grid, x0, x1, period, stats);
-    work.convertTo(texture, CV_8UC3);  // rounds and saturates
+    cv::Mat1f filledLum;
+    cv::cvtColor(pixels, grey, cv::COLOR_BGR2GRAY);
+    grey.convertTo(filledLum, CV_32F);
+    cv::Mat1b codes;
+    addDetail(pixels, filledLum, grid, x0, x1, period, codes, stats);
+    if (stats.detailFraction > 0) {
+      for (int y = 0; y < pixels.rows; ++y) {
+        cv::Vec3b* p = pixels.ptr<cv::Vec3b>(y);
+        const uint8_t* code = codes.ptr<uint8_t>(y);
+        for (int x = 0; x < pixels.cols; ++x) {
+          if (code[x] != engine::kNoDetail) engine::applyDetail(p[x].val, code[x], p[x].val);
+        }
+      }
+      if (detail) *detail = codes;
+    }
   }
   return stats;
 }

@@ -8,14 +8,17 @@
 // (where it lands in the photo and how many texels one photo pixel covers along each
 // axis). Where a texel is sharp is the exemplar, the photo's own view of this surface
 // up close. Then:
-//  - detail: each coarse tile is matched against the exemplar, blurred as the photo
-//    blurred the tile (the same rows, any depth: a brick course stays a brick course),
-//    so the phase of bricks, tiles and boards comes from the coarse evidence, and the
-//    match's detail (its difference from its own blur) is added to the tile. The tile's
+//  - detail: each coarse tile takes the exemplar's detail (its difference from itself
+//    blurred as the photo blurred the tile) from the same rows (a brick course stays a
+//    brick course). On a surface that repeats along the depth (bricks, tiles, boards)
+//    the lattice continues: the period is measured on the exemplar to a small fraction
+//    of a texel, and the detail comes from whole periods away, shifted by the fraction.
+//    Elsewhere the tile is matched against the exemplar, blurred likewise. The tile's
 //    own low frequencies, its shading and colour, stay as the photo has them. The
-//    detail is finer than the photo's pixels there, yet photowalk's renderer samples a
-//    texture cut from a photo at the photo's own resolution (scene.frag), so from the
-//    photo's camera it shows: `build` adds it only with --detail.
+//    detail goes into the texture's detail layer (engine/scene/texture_detail.h): it
+//    is finer than the photo's pixels there, and photowalk's renderer shows it only
+//    where a view comes closer than the photo did, so that from the photo's camera the
+//    view is still the photo.
 //  - fill: tiles the photo does not show (and any columns the caller adds before the
 //    first, the surface running on towards and behind the camera) are copied from the
 //    exemplar at the same rows, shifted along the depth by whole periods when the
@@ -49,7 +52,10 @@ struct SynthesisStats {
 using PhotoOfTexel = std::function<std::optional<glm::dvec2>(double x, double y)>;
 
 // Synthesizes in place. `texture`: 8-bit BGR, depth-major. `photoSize`: the photo's.
+// With detail added, `texture` is the composite and `detail` (when given) receives the
+// detail layer (8-bit, one channel: engine/scene/texture_detail.h's codes); it is left
+// empty when no detail was added.
 SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, cv::Size photoSize,
-                                 const SynthesisOptions& options = {});
+                                 const SynthesisOptions& options = {}, cv::Mat* detail = nullptr);
 
 }  // namespace pw::modeling

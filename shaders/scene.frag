@@ -49,17 +49,26 @@ vec3 litColor(const vec3 OD, const MaterialGpu m) {
 // one such pixel of blur; the filter supplies the rest, sqrt(J^2 - 1), by scaling that
 // axis's gradient. Far away (J >> 1) this is ordinary mipmapping; from the photo's
 // camera (J = 1) it samples the full-resolution texture as the photo was seen.
-vec4 samplePhotoTexture(const vec2 uv) {
+// The texture is uploaded as its base (what the photo shows) with the detail layer's
+// code in alpha (engine/scene/texture_detail.h). Where a screen pixel covers less of
+// the photo than one of its pixels, along either axis (a view closer than the photo
+// was taken), the detail fades in: none at a photo pixel per screen pixel, all of it
+// at half one.
+vec3 samplePhotoTexture(const vec2 uv) {
   const vec2 photo = inPhoto.xy / inPhoto.z;
   const vec2 texels = vec2(draw.textureSource[1].w, draw.textureSource[2].w);
   const vec2 uvX = dFdx(uv), uvY = dFdy(uv);
   const vec2 texelsX = uvX * texels, texelsY = uvY * texels, photoX = dFdx(photo), photoY = dFdy(photo);
-  // Squared footprints: no square roots but the two the scales need.
-  const float jX2 = max(min(dot(texelsX, texelsX), dot(photoX, photoX)), 1e-12);
-  const float jY2 = max(min(dot(texelsY, texelsY), dot(photoY, photoY)), 1e-12);
+  const float photoX2 = dot(photoX, photoX), photoY2 = dot(photoY, photoY);
+  // Squared footprints: no square roots but the three the scales need.
+  const float jX2 = max(min(dot(texelsX, texelsX), photoX2), 1e-12);
+  const float jY2 = max(min(dot(texelsY, texelsY), photoY2), 1e-12);
+  const float detail = clamp(2.0 - 2.0 * sqrt(min(photoX2, photoY2)), 0.0, 1.0);
   const float scaleX = sqrt(max(0.0, 1.0 - 1.0 / jX2));
   const float scaleY = sqrt(max(0.0, 1.0 - 1.0 / jY2));
-  return textureGrad(shapeTexture, uv, uvX * scaleX, uvY * scaleY);
+  const vec4 texel = textureGrad(shapeTexture, uv, uvX * scaleX, uvY * scaleY);
+  const float octaves = (texel.a * 255.0 - 128.0) / PW_DETAIL_CODES_PER_OCTAVE;
+  return texel.rgb * exp2(detail * octaves);
 }
 
 vec3 encodeSrgb(const vec3 linear) {
@@ -79,7 +88,7 @@ void main() {
   if (kTextured) {
     // _SRGB format: already linear. A specialization constant, not a push constant:
     // lavapipe ran both sides of a run-time branch around texture(), 40% of a frame.
-    const vec4 texel = kPhotoTexture ? samplePhotoTexture(inTexCoord) : texture(shapeTexture, inTexCoord);
+    const vec4 texel = kPhotoTexture ? vec4(samplePhotoTexture(inTexCoord), 1.0) : texture(shapeTexture, inTexCoord);
     // VRML97 table 4.5: an RGB(A) texture replaces the diffuse colour, a grey one
     // (intensity) modulates it.
     OD = (flags & kMaterialIntensityTexture) != 0u ? OD * texel.r : texel.rgb;

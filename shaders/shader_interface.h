@@ -60,6 +60,9 @@ PW_SHADER_CONST uint kLightSpot = 2u;
 #define PW_SPEC_LIT 1          // VRML97 lighting; false: no Material, the colour at full intensity
 #define PW_SPEC_ENCODE_SRGB 2  // a UNORM target: the shader applies the sRGB curve itself
 #define PW_SPEC_PHOTO_TEXTURE 3  // the texture was cut from a photo: filter at its footprint (scene.frag)
+// A texture cut from a photo keeps its detail layer's code in alpha: the composite is
+// the base times 2^((code - 128) / this), code in 0..255 (engine/scene/texture_detail.h).
+#define PW_DETAIL_CODES_PER_OCTAVE 64.0
 #define PW_SPEC_VERTEX_LIGHTING 4  // light per vertex (scene.vert), not per pixel: CPU devices, interactive
 
 // MaterialGpu.flags.x bits (decided per shape at run time: cheap either way).

@@ -31,9 +31,8 @@ constexpr const char* kUsage =
     "  --photo-only          only what the photo shows: no detail added where it saw a\n"
     "                        surface coarsely, no texture where it did not see it, and\n"
     "                        the corridor left open behind the camera\n"
-    "  --detail              also add detail where the photo saw a surface coarsely (sharper\n"
-    "                        views from inside the corridor; the view from the photo's own\n"
-    "                        camera loses some of its match with the photo)\n"
+    "  --no-detail           synthesize what the photo did not see, but add no detail where\n"
+    "                        it saw a surface coarsely\n"
     "  --jpeg                textures as JPEG instead of PNG\n"
     "  --sigma-px S          corner standard deviation for the printed ± (default 1)\n";
 
@@ -72,7 +71,7 @@ int runBuild(Args& args) {
   modeling::ModelOptions options;
   options.lit = args.flag("--lit");
   options.photoOnly = args.flag("--photo-only");
-  options.detail = args.flag("--detail");
+  options.detail = !args.flag("--no-detail");
   engine::VrmlWriteOptions vrmlOptions;
   vrmlOptions.jpegTextures = args.flag("--jpeg");
   const std::vector<std::string> shots = args.positionals();

@@ -9,6 +9,7 @@
 #include "engine/gltf/gltf_document.h"
 #include "engine/gltf/gltf_mapping.h"
 #include "engine/scene/image.h"
+#include "engine/scene/texture_detail.h"
 
 namespace pw::engine::gltf {
 
@@ -58,6 +59,12 @@ int DocumentBuilder::textureFor(const Texture& texture) {
   const int image = imageFor(texture.image);
   if (!texture.url.empty() && !doc_["images"][image].contains("name")) {
     doc_["images"][image]["name"] = std::filesystem::path(texture.url).filename().string();
+  }
+  // A detail layer (texture_detail.h): an image no texture uses, named as the info line
+  // that names its texture says (other viewers show the composite, `image`).
+  if (texture.sourceFromTexCoord && hasDetail(texture) && !texture.url.empty() && !images_.count(texture.detail.get())) {
+    const int detail = imageFor(texture.detail);
+    doc_["images"][detail]["name"] = detailUrl(std::filesystem::path(texture.url).filename().string());
   }
   const auto wraps = std::make_pair(wrapCode(texture.wrapS), wrapCode(texture.wrapT));
   auto sampler = samplers_.find(wraps);

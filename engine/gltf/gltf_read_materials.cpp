@@ -25,6 +25,10 @@ std::map<size_t, DecodedImage> decodeUsedImages(const Source& source) {
       if (image && image->is_number_unsigned()) used.insert(image->get<size_t>());
     }
   }
+  return decodeImages(source, used);
+}
+
+std::map<size_t, DecodedImage> decodeImages(const Source& source, const std::set<size_t>& used) {
   struct Job {
     size_t index;
     std::string where;

@@ -33,6 +33,8 @@ struct DecodedImage {
 // Decodes every image that a material's baseColorTexture uses, on all cores: PNG and
 // JPEG decoding is most of the reader's time on a textured model (bench/gltf_bench.cpp).
 std::map<size_t, DecodedImage> decodeUsedImages(const Source& source);
+// The same for the images `used` lists (by index).
+std::map<size_t, DecodedImage> decodeImages(const Source& source, const std::set<size_t>& used);
 
 class SceneBuilder {
  public:

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "base/atomic_file.h"
+#include "engine/gltf/gltf_read_scene.h"
 #include "engine/gltf/gltf_read_source.h"
 #include "engine/scene/model_info.h"
 
@@ -141,7 +142,19 @@ Result<Scene> parseGltf(std::span<const uint8_t> bytes, const std::filesystem::p
   PW_TRY(loadBuffers(source, bin, hasBin));
   try {
     auto scene = gltf::buildScene(source);
-    if (scene) takeModelInfo(*scene);
+    // Detail layers (texture_detail.h): images of the names the info lines give.
+    const auto loadDetail = [&source](const std::string& name) -> std::shared_ptr<const Image> {
+      const Json* images = gltf::member(source.doc, "images");
+      if (!images || !images->is_array()) return nullptr;
+      for (size_t i = 0; i < images->size(); ++i) {
+        const Json* n = gltf::member((*images)[i], "name");
+        if (!n || !n->is_string() || n->get<std::string>() != name) continue;
+        auto decoded = gltf::decodeImages(source, {i});
+        return decoded.count(i) ? decoded[i].image : nullptr;
+      }
+      return nullptr;
+    };
+    if (scene) takeModelInfo(*scene, loadDetail);
     return scene;
   } catch (const Json::exception& e) {
     // Every member is checked before use; this only turns an oversight into an error.

@@ -8,6 +8,7 @@
 
 #include "engine/gpu/barriers.h"
 #include "engine/gpu/vk_check.h"
+#include "engine/scene/texture_detail.h"
 
 namespace pw::engine::gpu {
 namespace {
@@ -116,8 +117,12 @@ Result<SceneStaging> GpuScene::stage(const Context& context, const PipelineLibra
   put(out.lightLists, packed.lightLists.data());
   for (size_t i = 0; i < images.size(); ++i) {
     static const uint8_t kWhite[4] = {255, 255, 255, 255};
-    std::memcpy(bytes + out.textures[i].offset, images[i] ? images[i]->rgba.data() : kWhite,
-                images[i] ? images[i]->rgba.size() : 4);
+    if (i > 0 && packed.textures[i - 1].cutFromPhoto) {
+      stageBaseAndDetail(*packed.textures[i - 1].texture, bytes + out.textures[i].offset);
+    } else {
+      std::memcpy(bytes + out.textures[i].offset, images[i] ? images[i]->rgba.data() : kWhite,
+                  images[i] ? images[i]->rgba.size() : 4);
+    }
   }
   out.opaque = std::move(packed.opaque);
   out.transparent = std::move(packed.transparent);

@@ -195,7 +195,10 @@ Result<PackedScene> packScene(const Scene& scene) {
                          std::to_string(image.height) + " size");
       }
       auto [slot, inserted] = textureSlots.emplace(texture, static_cast<uint32_t>(out.textures.size() + 1));
-      if (inserted) out.textures.push_back({texture, anyTransparentTexel(image)});
+      if (inserted) {
+        const bool transparent = anyTransparentTexel(image);
+        out.textures.push_back({texture, transparent, !transparent && textureSourceColumns(*texture).has_value()});
+      }
       textureSlot = slot->second;
       textureAlpha = out.textures[textureSlot - 1].hasAlpha;
       flags |= kMaterialTextured | (textureAlpha ? kMaterialTextureAlpha : 0u) |
@@ -221,7 +224,9 @@ Result<PackedScene> packScene(const Scene& scene) {
     if (source) draw.textureSource = *source;
     draw.variant.topology = mesh.topology;
     draw.variant.textured = textureSlot != 0;
-    draw.variant.photoTexture = source.has_value() && mesh.topology == Topology::kTriangles;
+    // A texture cut from a photo is opaque: its alpha holds the detail layer. One with
+    // transparent texels is drawn as any other.
+    draw.variant.photoTexture = source.has_value() && !textureAlpha && mesh.topology == Topology::kTriangles;
     draw.variant.lit = (flags & kMaterialUnlit) == 0;
     // The texture's alpha replaces the material's transparency (VRML97 4.14.3, table 4.5).
     const bool alphaFromTexture = textureAlpha;

@@ -59,6 +59,9 @@ struct DrawItem {
 struct PackedTexture {
   const Texture* texture = nullptr;  // borrowed from the Scene for the duration of the upload
   bool hasAlpha = false;              // some texel has alpha < 255
+  // Drawn as cut from a photo (an opaque texture with a usable source): uploaded as its
+  // base with the detail code in alpha (texture_detail.h, stageBaseAndDetail).
+  bool cutFromPhoto = false;
 };
 
 struct PackedScene {

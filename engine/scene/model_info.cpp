@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "engine/scene/texture_detail.h"
 #include "engine/scene/texture_source.h"
 
 namespace pw::engine {
@@ -18,7 +19,8 @@ std::optional<std::string> afterTag(const std::string& line, const char* tag) {
 }
 
 bool isPhotowalkLine(const std::string& line) {
-  return afterTag(line, kTourTag) || afterTag(line, kCameraTag) || afterTag(line, kTextureSourceTag);
+  return afterTag(line, kTourTag) || afterTag(line, kCameraTag) || afterTag(line, kTextureSourceTag) ||
+         afterTag(line, kTextureDetailTag);
 }
 
 // %.9g: a float's value exactly; %.17g: a double's.
@@ -83,7 +85,9 @@ std::vector<std::string> infoForFile(const Scene& scene, const std::function<std
   // The user's lines and the texture sources (which come last), less stray lines of ours.
   std::vector<std::string> info;
   for (std::string& line : infoWithTextureSources(scene, urlOf)) {
-    if (afterTag(line, kTextureSourceTag) || !isPhotowalkLine(line)) info.push_back(std::move(line));
+    if (afterTag(line, kTextureSourceTag) || afterTag(line, kTextureDetailTag) || !isPhotowalkLine(line)) {
+      info.push_back(std::move(line));
+    }
   }
   std::vector<std::string> ours;
   if (scene.tour.size() >= 2) ours.push_back(encodeTourLine(scene.tour));
@@ -97,8 +101,8 @@ std::vector<std::string> infoForFile(const Scene& scene, const std::function<std
   return info;
 }
 
-void takeModelInfo(Scene& scene) {
-  applyTextureSources(scene);  // takes its own lines out first
+void takeModelInfo(Scene& scene, const ImageLoader& loadDetail) {
+  applyTextureSources(scene, loadDetail);  // takes its own lines out first
   std::map<std::string, std::vector<Intrinsics>> cameras;
   std::vector<std::string> kept;
   for (const std::string& line : scene.info) {

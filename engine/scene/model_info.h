@@ -8,6 +8,7 @@
 //       description goes to the k-th viewpoint of that description)
 //   photowalk-texture-source ...                   Texture::sourceFromTexCoord
 //       (texture_source.h)
+//   photowalk-texture-detail URL                   Texture::detail (texture_detail.h)
 #pragma once
 
 #include <functional>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "engine/scene/scene.h"
+#include "engine/scene/texture_source.h"
 
 namespace pw::engine {
 
@@ -30,7 +32,8 @@ std::vector<std::string> infoForFile(const Scene& scene, const std::function<std
 // What a reader does with the info strings it read into scene.info: takes the photowalk
 // lines out and puts what they say where it belongs (Scene::tour, Viewpoint::intrinsics,
 // Texture::sourceFromTexCoord). Malformed lines are dropped.
-void takeModelInfo(Scene& scene);
+// Detail layers are loaded with `loadDetail` (texture_source.h).
+void takeModelInfo(Scene& scene, const ImageLoader& loadDetail = {});
 
 // One line each way, for tests and tools. decode* return nothing for a line that is not
 // theirs or is malformed (a tour of fewer than two points, numbers that are not

@@ -46,6 +46,11 @@ struct Texture {
   // view from the photo's camera gives the photo back unblurred. Files keep it as a
   // photowalk extension (texture_source.h).
   std::optional<glm::mat3> sourceFromTexCoord;
+  // With a source: detail synthesized finer than the photo resolves, as a grey image of
+  // the texture's size (texture_detail.h). `image` is then the composite; photowalk's
+  // renderer divides the detail out where a view does not magnify the photo. Files keep
+  // it as an image of its own and an info line (model_info.h).
+  std::shared_ptr<const Image> detail;
 };
 
 // A shape with no material is drawn unlit (VRML97 6.5: full intensity texture or

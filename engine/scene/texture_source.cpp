@@ -1,5 +1,7 @@
 #include "engine/scene/texture_source.h"
 
+#include "engine/scene/texture_detail.h"
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -12,10 +14,13 @@
 namespace pw::engine {
 namespace {
 
-bool isTextureSourceLine(const std::string& line) {
-  const std::string tag = std::string(kTextureSourceTag) + " ";
-  return line.compare(0, tag.size(), tag) == 0;
+bool hasTag(const std::string& line, const char* tag) {
+  const size_t n = std::char_traits<char>::length(tag);
+  return line.size() > n + 1 && line.compare(0, n, tag) == 0 && line[n] == ' ';
 }
+
+bool isTextureSourceLine(const std::string& line) { return hasTag(line, kTextureSourceTag); }
+bool isTextureDetailLine(const std::string& line) { return hasTag(line, kTextureDetailTag); }
 
 std::optional<std::pair<std::string, glm::mat3>> parseLine(const std::string& line) {
   std::istringstream in(line.substr(std::char_traits<char>::length(kTextureSourceTag)));
@@ -39,7 +44,7 @@ std::vector<std::string> infoWithTextureSources(const Scene& scene,
                                                 const std::function<std::string(const Texture&)>& urlOf) {
   std::vector<std::string> info;
   for (const std::string& line : scene.info) {
-    if (!isTextureSourceLine(line)) info.push_back(line);
+    if (!isTextureSourceLine(line) && !isTextureDetailLine(line)) info.push_back(line);
   }
   std::set<std::string> written;
   for (const Shape& shape : scene.shapes) {
@@ -57,15 +62,19 @@ std::vector<std::string> infoWithTextureSources(const Scene& scene,
       }
     }
     info.push_back(line + " " + url);
+    if (hasDetail(*texture)) info.push_back(std::string(kTextureDetailTag) + " " + url);
   }
   return info;
 }
 
-void applyTextureSources(Scene& scene) {
+void applyTextureSources(Scene& scene, const ImageLoader& loadDetail) {
   std::map<std::string, glm::mat3> sources;
+  std::set<std::string> details;
   std::vector<std::string> kept;
   for (const std::string& line : scene.info) {
-    if (!isTextureSourceLine(line)) {
+    if (isTextureDetailLine(line)) {
+      details.insert(line.substr(std::char_traits<char>::length(kTextureDetailTag) + 1));
+    } else if (!isTextureSourceLine(line)) {
       kept.push_back(line);
     } else if (auto parsed = parseLine(line)) {
       sources.insert(*parsed);
@@ -87,6 +96,10 @@ void applyTextureSources(Scene& scene) {
         if (auto source = sources.find(old->url); source != sources.end()) {
           auto copy = std::make_shared<Texture>(*old);
           copy->sourceFromTexCoord = source->second;
+          if (details.count(old->url) && loadDetail) {
+            copy->detail = loadDetail(detailUrl(old->url));
+            if (!hasDetail(*copy)) copy->detail.reset();
+          }
           replacement = std::move(copy);
         }
         texture = textures.emplace(old.get(), std::move(replacement)).first;

@@ -83,6 +83,15 @@ class FileLoader final : public vrml::DocumentLoader {
   std::unordered_map<std::string, std::shared_ptr<vrml::Document>> cache_;
 };
 
+// Detail layers (texture_detail.h): files beside the model, as its textures are.
+ImageLoader detailLoader(const fs::path& dir) {
+  return [dir](const std::string& url) -> std::shared_ptr<const Image> {
+    if (url.find("://") != std::string::npos) return nullptr;
+    auto image = loadImage(dir / fs::path(url));
+    return image ? std::make_shared<const Image>(std::move(*image)) : nullptr;
+  };
+}
+
 }  // namespace
 
 Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics) {
@@ -90,7 +99,7 @@ Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics) {
   auto document = loader.load(path);
   if (!document) return document.error();
   auto scene = vrml::buildScene(*document, loader, diagnostics);
-  if (scene) takeModelInfo(*scene);
+  if (scene) takeModelInfo(*scene, detailLoader(path.parent_path()));
   return scene;
 }
 
@@ -100,7 +109,7 @@ Result<Scene> readVrmlString(std::string_view text, const fs::path& baseDir, Dia
   if (!document) return document.error();
   FileLoader loader(diagnostics);
   auto scene = vrml::buildScene(std::make_shared<vrml::Document>(std::move(*document)), loader, diagnostics);
-  if (scene) takeModelInfo(*scene);
+  if (scene) takeModelInfo(*scene, detailLoader(baseDir));
   return scene;
 }
 

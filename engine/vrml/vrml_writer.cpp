@@ -7,6 +7,7 @@
 
 #include "base/atomic_file.h"
 #include "engine/scene/model_info.h"
+#include "engine/scene/texture_detail.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_tokenizer.h"
 #include "engine/vrml/vrml_transform.h"
@@ -502,6 +503,15 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     for (int k = 2; taken.count(file); ++k) file = base + "_" + std::to_string(k) + ext;
     taken.insert(file);
     urls.emplace(t.image.get(), file);
+  }
+  // Detail layers (texture_detail.h) beside their textures, as the info lines name them.
+  for (const Shape& s : scene.shapes) {
+    const Texture* t = s.appearance ? s.appearance->texture.get() : nullptr;
+    if (!t || !t->sourceFromTexCoord || !hasDetail(*t) || urls.count(t->detail.get())) continue;
+    auto url = urls.find(t->image.get());
+    if (url == urls.end()) continue;
+    const std::string file = detailUrl(url->second);
+    if (taken.insert(file).second) urls.emplace(t->detail.get(), file);
   }
   auto text = vrmlText(scene, options, urls);
   if (!text) return makeError(out.string() + ": " + text.message());

@@ -3,12 +3,13 @@
 // model is built from the scene's exact corners. bench/novel_view_bench prints the
 // whole table; this test keeps the floor under it:
 //  - `build`'s model (what the photo did not see synthesized, the corridor closed
-//    behind the camera) is nowhere worse than `build --photo-only`'s by more than
-//    0.5 dB, and looking back it is better in every scene by at least 1.5 dB (the
-//    void behind the camera is gone), each scene's back view holds its measured
-//    figure less 1 dB, and their median the 27 dB;
-//  - `build --detail` adds high-frequency energy: the median ratio at mid-corridor at
-//    least 0.4 (photo-only: 0.25), and no view more than 0.5 dB worse than photo-only.
+//    behind the camera, detail added where the photo saw coarsely) and `build
+//    --no-detail`'s are nowhere worse than `build --photo-only`'s by more than 0.5 dB,
+//    and looking back `build`'s is better in every scene by at least 1.5 dB (the void
+//    behind the camera is gone), each scene's back view holds its measured figure less
+//    1 dB, and their median the 27 dB;
+//  - the detail adds high-frequency energy: `build`'s median ratio at mid-corridor at
+//    least 0.4 (photo-only: 0.25) and 0.15 more than `--no-detail`'s.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,11 +26,11 @@
 namespace pw::modeling {
 namespace {
 
-// Measured 2026-12-01 on lavapipe (bench/novel_view_bench): the back view's PSNR of
+// Measured 2026-12-02 on lavapipe (bench/novel_view_bench): the back view's PSNR of
 // `build`'s model, dB.
 const std::map<std::string, double> kBackPsnrDb = {
-    {"corridor_a", 23.26}, {"corridor_b", 36.51}, {"corridor_c", 31.10}, {"corridor_d", 21.76},
-    {"corridor_e", 23.96}, {"corridor_f", 27.15}, {"corridor_g", 29.02}, {"corridor_h", 33.81},
+    {"corridor_a", 23.39}, {"corridor_b", 36.19}, {"corridor_c", 31.08}, {"corridor_d", 21.74},
+    {"corridor_e", 23.94}, {"corridor_f", 27.52}, {"corridor_g", 29.11}, {"corridor_h", 33.75},
 };
 
 double median(std::vector<double> v) {
@@ -43,7 +44,7 @@ TEST(NovelViews, SynthesisClosesTheCorridorAndNeverCostsAView) {
   options.validation = engine::RendererOptions::Validation::kOn;
   auto renderer = engine::Renderer::create(options);
   ASSERT_TRUE(renderer.ok()) << renderer.message();
-  std::vector<double> detailAhead, photoOnlyAhead, backPsnr;
+  std::vector<double> detailAhead, noDetailAhead, backPsnr;
   for (const std::string& name : groundtruth::groundTruthNames()) {
     SCOPED_TRACE(name);
     const auto shot = groundtruth::groundTruthShot(name);
@@ -51,7 +52,7 @@ TEST(NovelViews, SynthesisClosesTheCorridorAndNeverCostsAView) {
     for (int m = 0; m < 3; ++m) {
       ModelOptions model;
       model.photoOnly = m == 0;
-      model.detail = m == 2;
+      model.detail = m == 1;
       auto built = buildModel(chainLayout({shot}), model);
       ASSERT_TRUE(built.ok()) << built.message();
       scenes[m] = std::move(built->scene);
@@ -65,22 +66,22 @@ TEST(NovelViews, SynthesisClosesTheCorridorAndNeverCostsAView) {
         ASSERT_FALSE(frame.empty()) << error;
         scores[m] = test::scoreView(frame, view.truth);
       }
-      std::printf("[novel view] %s %-6s PSNR photo-only %.2f, build %.2f, --detail %.2f dB; HF %.2f %.2f %.2f\n",
+      std::printf("[novel view] %s %-6s PSNR photo-only %.2f, build %.2f, --no-detail %.2f dB; HF %.2f %.2f %.2f\n",
                   name.c_str(), kind.c_str(), scores[0].psnrDb, scores[1].psnrDb, scores[2].psnrDb,
                   scores[0].highFrequencyRatio, scores[1].highFrequencyRatio, scores[2].highFrequencyRatio);
       EXPECT_GE(scores[1].psnrDb, scores[0].psnrDb - 0.5) << kind;
-      EXPECT_GE(scores[2].psnrDb, scores[0].psnrDb - 0.5) << kind << " with --detail";
+      EXPECT_GE(scores[2].psnrDb, scores[0].psnrDb - 0.5) << kind << " with --no-detail";
       if (kind == "back") {
         EXPECT_GE(scores[1].psnrDb, scores[0].psnrDb + 1.5) << "looking back, the closed corridor";
         EXPECT_GE(scores[1].psnrDb, kBackPsnrDb.at(name) - 1.0);
         backPsnr.push_back(scores[1].psnrDb);
       }
-      if (kind == "ahead") detailAhead.push_back(scores[2].highFrequencyRatio), photoOnlyAhead.push_back(scores[0].highFrequencyRatio);
+      if (kind == "ahead") detailAhead.push_back(scores[1].highFrequencyRatio), noDetailAhead.push_back(scores[2].highFrequencyRatio);
     }
   }
-  EXPECT_GE(median(detailAhead), 0.4) << "--detail: high-frequency energy at mid-corridor";
+  EXPECT_GE(median(detailAhead), 0.4) << "the detail: high-frequency energy at mid-corridor";
   EXPECT_GE(median(backPsnr), 27.0) << "looking back, the issue's target";
-  EXPECT_GT(median(detailAhead), median(photoOnlyAhead) + 0.1);
+  EXPECT_GT(median(detailAhead), median(noDetailAhead) + 0.15);
   EXPECT_EQ((*renderer)->validationMessageCount(), 0u);
 }
 
