@@ -59,6 +59,7 @@ LensFrame lensFrame(const engine::Camera& photoCamera, const metrology::Intrinsi
   k.imageWidth = frame.width;
   k.imageHeight = frame.height;
   frame.camera.intrinsics = k;
+  frame.camera.supersample = static_cast<float>(s);
   return frame;
 }
 

@@ -117,6 +117,16 @@ MUTATIONS = [
         "  scaled.focalPx = lens.focalPx * work.scale;\n",
         "  scaled.focalPx = lens.focalPx;\n",
         "the working copy is undistorted with the full-resolution focal length (too little bend)"),
+    Mutation(
+        "detail-never-faded", "shaders/scene.frag",
+        "  return texel.rgb * exp2(detail * octaves);\n",
+        "  return texel.rgb * exp2(octaves);\n",
+        "the detail layer is drawn at every footprint, from the photo's camera too"),
+    Mutation(
+        "period-not-refined", "modeling/synthesis.cpp",
+        "        period = *peak / k;\n",
+        "",
+        "the lattice's period is taken from its first peak only (a fraction of a texel off)"),
 ]
 
 BY_NAME = {m.name: m for m in MUTATIONS}

@@ -53,7 +53,8 @@ vec3 litColor(const vec3 OD, const MaterialGpu m) {
 // code in alpha (engine/scene/texture_detail.h). Where a screen pixel covers less of
 // the photo than one of its pixels, along either axis (a view closer than the photo
 // was taken), the detail fades in: none at a photo pixel per screen pixel, all of it
-// at half one.
+// at half one. A supersampled frame (Camera::supersample) counts the pixels of the image
+// it is averaged down to.
 vec3 samplePhotoTexture(const vec2 uv) {
   const vec2 photo = inPhoto.xy / inPhoto.z;
   const vec2 texels = vec2(draw.textureSource[1].w, draw.textureSource[2].w);
@@ -63,7 +64,7 @@ vec3 samplePhotoTexture(const vec2 uv) {
   // Squared footprints: no square roots but the three the scales need.
   const float jX2 = max(min(dot(texelsX, texelsX), photoX2), 1e-12);
   const float jY2 = max(min(dot(texelsY, texelsY), photoY2), 1e-12);
-  const float detail = clamp(2.0 - 2.0 * sqrt(min(photoX2, photoY2)), 0.0, 1.0);
+  const float detail = clamp(2.0 - 2.0 * frame.cameraPosition.w * sqrt(min(photoX2, photoY2)), 0.0, 1.0);
   const float scaleX = sqrt(max(0.0, 1.0 - 1.0 / jX2));
   const float scaleY = sqrt(max(0.0, 1.0 - 1.0 / jY2));
   const vec4 texel = textureGrad(shapeTexture, uv, uvX * scaleX, uvY * scaleY);

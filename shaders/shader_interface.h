@@ -76,7 +76,7 @@ PW_SHADER_CONST uint kMaterialIntensityTexture = 32u;  // a 1- or 2-component te
 // Set 0: one per scene view of a frame in flight.
 struct FrameUniforms {
   mat4 viewProjection;     // world to Vulkan clip
-  vec4 cameraPosition;     // xyz world metres
+  vec4 cameraPosition;     // xyz world metres; w: Camera::supersample (at least 1)
   vec4 headlightDirection; // xyz: direction the light travels (the view direction)
   uvec4 lightCounts;       // x: directional lights, first in the light buffer (they reach
                            // everything); y, z: 0 (the point and spot lights that reach a

@@ -69,7 +69,7 @@ Status recordSceneView(VkCommandBuffer cmd, PipelineLibrary& pipelines, const Gp
   const glm::mat4 viewProjection = projectionMatrix(camera, width, height) * viewMatrix(camera);
   FrameUniforms uniforms{};
   uniforms.viewProjection = viewProjection;
-  uniforms.cameraPosition = glm::vec4(camera.position, 1.0f);
+  uniforms.cameraPosition = glm::vec4(camera.position, std::max(1.0f, camera.supersample));
   const bool headlight = settings.headlight.value_or(scene.headlight);
   uniforms.headlightDirection = glm::vec4(forwardOf(camera), 0.0f);
   uniforms.lightCounts = glm::uvec4(scene.lightCounts.x, 0u, 0u, headlight ? 1u : 0u);

@@ -24,6 +24,10 @@ struct Camera {
   std::optional<Intrinsics> intrinsics;
   float nearM = 0.05f;
   float farM = 2000.0f;
+  // How many times finer than the image it stands for the frame is drawn (a
+  // supersampled frame, averaged down afterwards: modeling::lensFrame). Texture detail
+  // finer than a photo's pixels (texture_detail.h) is judged per pixel of that image.
+  float supersample = 1.0f;
 };
 
 glm::quat orientationFromAxisAngle(const glm::vec4& axisAngle);

@@ -1,3 +1,4 @@
+#include "engine/scene/texture_detail.h"
 #include "modeling/corridor_model.h"
 
 #include <gtest/gtest.h>
@@ -125,6 +126,12 @@ TEST_F(CorridorModelTest, TexturePixelsMatchThePhotoThroughTheCamera) {
   ASSERT_TRUE(model.ok()) << model.message();
   const Panel panel = surfacePanel(Surface::kFloor, model->box, model->photoNearM);
   const SurfaceTexture& floor = *model->textures[static_cast<int>(Surface::kFloor)];
+  // The texture as the photo shows it: its detail layer divided out (texture_detail.h).
+  engine::Texture texture;
+  texture.image = std::make_shared<engine::Image>(floor.image);
+  if (!floor.detail.empty()) texture.detail = std::make_shared<engine::Image>(floor.detail);
+  std::vector<uint8_t> base(floor.image.rgba.size());
+  engine::stageBaseAndDetail(texture, base.data());
   // RMS difference between texels and the photo's pixels where the camera sees the
   // texel's model point; `mirror` reads the texture mirrored along s (what a texture
   // cut with one axis reversed would show).
@@ -139,7 +146,7 @@ TEST_F(CorridorModelTest, TexturePixelsMatchThePhotoThroughTheCamera) {
         if (px.z <= 0 || px.x < 1 || px.y < 1 || px.x > photo_.cols - 2 || px.y > photo_.rows - 2) continue;
         const double texS = mirror ? 1 - fs : fs;
         const int tx = static_cast<int>(texS * floor.image.width), ty = static_cast<int>((1 - ft) * floor.image.height);
-        const uint8_t* texel = floor.image.pixel(tx, ty);
+        const uint8_t* texel = base.data() + (static_cast<size_t>(ty) * floor.image.width + tx) * 4;
         const cv::Vec3b photoPx =
             photo_.at<cv::Vec3b>(static_cast<int>(std::lround(px.y)), static_cast<int>(std::lround(px.x)));
         for (int c = 0; c < 3; ++c) {
