@@ -8,6 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "engine/scene/camera.h"
+#include "engine/scene/color_space.h"
 
 namespace pw::engine::gltf {
 
@@ -139,14 +140,9 @@ SpotCone spotCone(const Light& light) {
 }
 
 
-float linearFromSrgb(float encoded) {
-  const float c = std::clamp(std::isnan(encoded) ? 0.0f : encoded, 0.0f, 1.0f);
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float linearFromSrgb(float encoded) { return srgbToLinear(encoded); }
 
-glm::vec3 linearFromSrgb(const glm::vec3& encoded) {
-  return {linearFromSrgb(encoded.x), linearFromSrgb(encoded.y), linearFromSrgb(encoded.z)};
-}
+glm::vec3 linearFromSrgb(const glm::vec3& encoded) { return srgbToLinear(encoded); }
 
 float srgbFromLinear(float linear) {
   const float c = std::clamp(std::isnan(linear) ? 0.0f : linear, 0.0f, 1.0f);

@@ -1,6 +1,6 @@
 #include "engine/gpu/image_pass.h"
 
-#include "engine/gpu/color_space.h"
+#include "engine/scene/color_space.h"
 #include "engine/gpu/pipelines.h"
 #include "engine/gpu/vk_check.h"
 #include "shaders/shader_interface.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "engine/gpu/color_space.h"
+#include "engine/scene/color_space.h"
 #include "engine/scene/texture_source.h"
 
 namespace pw::engine::gpu {

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "engine/gpu/barriers.h"
-#include "engine/gpu/color_space.h"
+#include "engine/scene/color_space.h"
 #include "engine/gpu/frustum.h"
 
 namespace pw::engine::gpu {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "engine/gpu/barriers.h"
-#include "engine/gpu/color_space.h"
+#include "engine/scene/color_space.h"
 #include "engine/gpu/image_pass.h"
 #include "engine/gpu/renderer_impl.h"
 
@@ -53,7 +53,7 @@ void colorWritesBeforeNextView(VkCommandBuffer cmd) {
 }
 
 void clearFrame(VkCommandBuffer cmd, const FrameTarget& target, const glm::vec3& clearColor) {
-  const glm::vec3 clear = target.encodeSrgbInShader ? clearColor : gpu::srgbToLinear(clearColor);
+  const glm::vec3 clear = target.encodeSrgbInShader ? clearColor : srgbToLinear(clearColor);
   VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   color.imageView = target.view;
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;

@@ -6,17 +6,10 @@
 #include <cstring>
 #include <filesystem>
 
+#include "engine/scene/color_space.h"
+
 namespace pw::engine {
 namespace {
-
-float toLinear(float encoded) {
-  return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
-float toSrgb(float linear) {
-  const float c = std::clamp(linear, 0.0f, 1.0f);
-  return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
 
 // Tables: a texel's three channels cost three lookups each way, not six pow() calls
 // (a 12-megapixel photo's textures pass through here on every upload). The encoding
@@ -29,11 +22,11 @@ struct Tables {
   std::array<uint8_t, kEncodeSteps + 1> srgb{};
   Tables() {
     for (int i = 0; i < 256; ++i) {
-      linear[i] = toLinear(i / 255.0f);
+      linear[i] = srgbToLinear(i / 255.0f);
       ratio[i] = std::exp2((i - kNoDetail) / kDetailCodesPerOctave);
     }
     for (int i = 0; i <= kEncodeSteps; ++i) {
-      srgb[i] = static_cast<uint8_t>(std::lround(255.0f * toSrgb(static_cast<float>(i) / kEncodeSteps)));
+      srgb[i] = static_cast<uint8_t>(std::lround(255.0f * linearToSrgb(static_cast<float>(i) / kEncodeSteps)));
     }
   }
   uint8_t encode(float linearValue) const {

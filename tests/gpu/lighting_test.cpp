@@ -6,15 +6,15 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/gpu/color_space.h"
+#include "engine/scene/color_space.h"
 #include "tests/gpu/renderer_fixture.h"
 #include "tests/gpu/vrml_lighting_reference.h"
 
 namespace pw::engine {
 namespace {
 
-using gpu::linearToSrgb;
-using gpu::srgbToLinear;
+using engine::linearToSrgb;
+using engine::srgbToLinear;
 
 constexpr int kSize = 33;  // odd: the centre pixel's ray is the optical axis
 constexpr float kFov = 0.8f;

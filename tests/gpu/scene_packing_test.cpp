@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "engine/gpu/color_space.h"
+#include "engine/scene/color_space.h"
 #include "engine/scene/sample_scene.h"
 
 namespace pw::engine::gpu {

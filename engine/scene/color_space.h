@@ -1,5 +1,6 @@
 // sRGB transfer functions (IEC 61966-2-1). The scene's colours are sRGB-encoded
-// display values like its textures' texels; lighting adds light in linear space.
+// display values like its textures' texels; lighting adds light in linear space, and
+// texture detail (texture_detail.h) and glTF's factors are in linear light too.
 #pragma once
 
 #include <algorithm>
@@ -7,10 +8,10 @@
 
 #include <glm/glm.hpp>
 
-namespace pw::engine::gpu {
+namespace pw::engine {
 
 inline float srgbToLinear(float encoded) {
-  const float c = std::clamp(encoded, 0.0f, 1.0f);
+  const float c = std::clamp(std::isnan(encoded) ? 0.0f : encoded, 0.0f, 1.0f);
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
@@ -22,4 +23,4 @@ inline float linearToSrgb(float linear) {
 inline glm::vec3 srgbToLinear(const glm::vec3& c) { return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)}; }
 inline glm::vec3 linearToSrgb(const glm::vec3& c) { return {linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b)}; }
 
-}  // namespace pw::engine::gpu
+}  // namespace pw::engine
