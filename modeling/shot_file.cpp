@@ -180,6 +180,10 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
   }
 
   auto corners = doc.find("corners_px");
+  if (corners == doc.end() && isVanishingPointsOnly(doc)) {
+    return makeError(where + ": no corners: detect found no corridor's box in this photo, only its vanishing points; "
+                     "place the corners in the editor (photowalk edit " + path.string() + ")");
+  }
   if (corners == doc.end() || !corners->is_object()) {
     return makeError(where + ": missing field \"corners_px\" ({\"P1\": [u, v], ... \"P8\": [u, v]})");
   }
@@ -299,7 +303,17 @@ Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx)
   return loaded;
 }
 
-Status writeShotFile(const fs::path& path, const metrology::Shot& shot, const json& otherFields) {
+bool isVanishingPointsOnly(const json& doc) {
+  if (!doc.is_object() || doc.contains("corners_px")) return false;
+  const auto detection = doc.find("detection");
+  if (detection == doc.end() || !detection->is_object()) return false;
+  const auto found = detection->find("found");
+  return found != detection->end() && found->is_boolean() && !found->get<bool>();
+}
+
+namespace {
+
+json shotJson(const fs::path& path, const metrology::Shot& shot, const json& otherFields, bool withCorners) {
   json doc = otherFields.is_object() ? otherFields : json::object();
   for (const char* key : kShotFields) doc.erase(key);
   fs::path image = shot.imagePath;
@@ -316,16 +330,28 @@ Status writeShotFile(const fs::path& path, const metrology::Shot& shot, const js
   }
   if (shot.principalPointPx) doc["principal_point"] = {shot.principalPointPx->x, shot.principalPointPx->y};
   if (shot.cameraHeightM) doc["camera_height_m"] = *shot.cameraHeightM;
-  json corners = json::object();
-  for (int i = 0; i < kCornerCount; ++i) corners[metrology::cornerName(i)] = {shot.cornersPx[i].x, shot.cornersPx[i].y};
-  doc["corners_px"] = corners;
+  if (withCorners) {
+    json corners = json::object();
+    for (int i = 0; i < kCornerCount; ++i) corners[metrology::cornerName(i)] = {shot.cornersPx[i].x, shot.cornersPx[i].y};
+    doc["corners_px"] = corners;
+  }
   if (shot.reference) {
     doc["reference"] = {{"from", metrology::cornerName(shot.reference->from)},
                         {"to", metrology::cornerName(shot.reference->to)},
                         {"length_m", shot.reference->lengthM}};
   }
   if (shot.distortion) doc["distortion"] = {{"k1", shot.distortion->k1}, {"k2", shot.distortion->k2}};
-  return writeFileAtomic(path, doc.dump(1) + "\n");
+  return doc;
+}
+
+}  // namespace
+
+Status writeShotFile(const fs::path& path, const metrology::Shot& shot, const json& otherFields) {
+  return writeFileAtomic(path, shotJson(path, shot, otherFields, true).dump(1) + "\n");
+}
+
+Status writeVanishingPointsFile(const fs::path& path, const metrology::Shot& shot, const json& otherFields) {
+  return writeFileAtomic(path, shotJson(path, shot, otherFields, false).dump(1) + "\n");
 }
 
 }  // namespace pw::modeling

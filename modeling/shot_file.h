@@ -46,6 +46,15 @@ Result<LoadedShot> loadShot(const std::filesystem::path& path, std::optional<dou
 Status writeShotFile(const std::filesystem::path& path, const metrology::Shot& shot,
                      const nlohmann::json& otherFields = nlohmann::json::object());
 
+// What `detect` writes when it finds a photo's vanishing points but no corridor's box:
+// the shot's fields without corners_px, beside `otherFields` (its "detection" object,
+// with "found": false). readShotFile refuses it, naming the editor as the way on; the
+// editor opens its photo.
+Status writeVanishingPointsFile(const std::filesystem::path& path, const metrology::Shot& shot,
+                                const nlohmann::json& otherFields);
+// Whether a parsed shot file is such a file (no corners_px; detection.found false).
+bool isVanishingPointsOnly(const nlohmann::json& doc);
+
 // The measurement as one JSON object (what `photowalk measure` prints): width_m,
 // height_m, length_m, sigma_m {...}, vanishing_point_px, camera {height_m, focal_px,
 // yaw_deg, pitch_deg, roll_deg, position_m, world_from_camera, sigma}, horizon,

@@ -1,5 +1,6 @@
 // photowalk detect: the corridor's vanishing points and eight corners, found
 // automatically in one photo and written as a shot file (issue 7).
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -22,7 +23,8 @@ using metrology::detect::CorridorDetection;
 
 constexpr const char* kUsage =
     "usage: photowalk detect PHOTO -o SHOT.json [--focal-px F] [--principal-point U,V]\n"
-    "                        [--camera-height H] [--near-at-image-edge] [--overlay OUT.png]\n\n"
+    "                        [--camera-height H] [--near-at-image-edge] [--overlay OUT.png]\n"
+    "       photowalk detect --hint ROUGH.json -o SHOT.json [--hint-reach PX] [--overlay OUT.png]\n\n"
     "Finds the corridor in the photo: its vanishing points (the Manhattan frame), the\n"
     "four receding floor and ceiling edges, the far wall's corners P1..P4 and the near\n"
     "corners P5..P8, each refined to sub-pixel precision on the image's edges, and\n"
@@ -43,11 +45,19 @@ constexpr const char* kUsage =
     "  --near-at-image-edge    put P5..P8 at the nearest depth where all four stay inside\n"
     "                          the photo even when a band or frame marks a cross-section\n"
     "  --overlay OUT.png       also draw what was found on the photo (corners ringed by\n"
-    "                          confidence: green >= 0.7, amber >= 0.4, red below)\n\n"
+    "                          confidence: green >= 0.7, amber >= 0.4, red below)\n"
+    "  --hint ROUGH.json       a shot whose corners a person placed roughly (within 10-20\n"
+    "                          px): they come back fitted to the photo's edges and\n"
+    "                          vanishing points, each with its confidence; the shot's\n"
+    "                          other fields (camera, reference, ...) are kept. The photo,\n"
+    "                          focal length and principal point are the shot's.\n"
+    "  --hint-reach PX         how far from where it was put a side is looked for (25)\n\n"
     "Exit status: 0 written, and detect is sure of it; 3 written, but unsure: a best\n"
     "guess for a person to check in the editor (a warning line on stderr says why);\n"
-    "1 bad input (one line on stderr); 2 no corridor found in the photo (nothing is\n"
-    "written).\n";
+    "1 bad input (one line on stderr); 2 no corridor's box found in the photo: the\n"
+    "vanishing points it did find are printed and, with -o, written to SHOT.json without\n"
+    "corners (\"detection\": {\"found\": false, ...}; the editor opens it and places a box\n"
+    "along them; measure and build refuse it), or nothing is written when it found none.\n";
 
 Result<glm::dvec2> parsePoint(const std::string& text, const char* option) {
   const size_t comma = text.find(',');
@@ -71,17 +81,21 @@ json vanishingPointJson(const metrology::detect::VanishingPoint& vp) {
 json detectionJson(const CorridorDetection& d) {
   json j;
   j["method"] = "lsd+manhattan-ransac+angular-profile+subpixel-edges";
+  j["found"] = d.found;
+  if (!d.found) j["reason"] = d.notFoundReason;
   j["focal_source"] = metrology::detect::focalSourceName(d.focalSource);
   j["near_depth"] = metrology::detect::nearDepthName(d.nearDepth);
   j["segments"] = d.segmentCount;
   j["vanishing_points"] = {{"corridor", vanishingPointJson(d.corridor)},
                            {"horizontal", vanishingPointJson(d.horizontal)},
                            {"vertical", vanishingPointJson(d.vertical)}};
-  json corners = json::object();
-  for (int k = 0; k < metrology::kCornerCount; ++k) {
-    corners[metrology::cornerName(k)] = {{"confidence", d.corners[k].confidence}, {"sigma_px", d.corners[k].sigmaPx}};
+  if (d.found) {
+    json corners = json::object();
+    for (int k = 0; k < metrology::kCornerCount; ++k) {
+      corners[metrology::cornerName(k)] = {{"confidence", d.corners[k].confidence}, {"sigma_px", d.corners[k].sigmaPx}};
+    }
+    j["corners"] = corners;
   }
-  j["corners"] = corners;
   j["warnings"] = d.warnings;
   j["confident"] = d.confident;
   j["doubts"] = d.doubts;
@@ -91,11 +105,28 @@ json detectionJson(const CorridorDetection& d) {
   return j;
 }
 
-// The shot file through writeShotFile (the format's one writer), with the detection
-// object beside the shot's fields.
-Status writeDetectedShot(const fs::path& path, const metrology::Shot& shot, const json& detection,
-                         const std::string& focalSource) {
-  return modeling::writeShotFile(path, shot, json{{"focal_source", focalSource}, {"detection", detection}});
+std::string homogeneousText(const metrology::detect::VanishingPoint& vp) {
+  char text[96];
+  if (vp.isFinite()) {
+    std::snprintf(text, sizeof text, "(%.1f, %.1f)", vp.pixel().x, vp.pixel().y);
+  } else {
+    std::snprintf(text, sizeof text, "at infinity towards (%.3f, %.3f)", vp.point.x, vp.point.y);
+  }
+  return text;
+}
+
+Status writeOverlay(const std::string& path, const cv::Mat& photo, const CorridorDetection& detection) {
+  const cv::Mat overlay = metrology::detect::drawDetection(photo, detection);
+  return writeViaTempFile(path, [&](const fs::path& temp) -> Status {
+    bool ok = false;
+    try {
+      ok = cv::imwrite(temp.string(), overlay);
+    } catch (const cv::Exception&) {
+      ok = false;
+    }
+    if (!ok) return makeError(path + ": cannot write the overlay (use a .png or .jpg name)");
+    return {};
+  });
 }
 
 int runDetect(Args& args) {
@@ -104,11 +135,15 @@ int runDetect(Args& args) {
   const std::optional<std::string> principal = args.value("--principal-point");
   const std::optional<std::string> height = args.value("--camera-height");
   const std::optional<std::string> overlayPath = args.value("--overlay");
+  const std::optional<std::string> hintPath = args.value("--hint");
+  const std::optional<std::string> hintReach = args.value("--hint-reach");
   metrology::detect::DetectOptions options;
   options.nearAtImageEdge = args.flag("--near-at-image-edge");
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
-  if (positionals.size() != 1) return fail("detect takes one photo; see photowalk detect --help");
+  if (hintPath ? positionals.size() > 1 : positionals.size() != 1) {
+    return fail("detect takes one photo (or --hint SHOT.json); see photowalk detect --help");
+  }
   if (!output) return fail("detect needs -o SHOT.json, the shot file to write");
   if (focal) {
     auto f = parseNumber(*focal, "--focal-px");
@@ -128,8 +163,27 @@ int runDetect(Args& args) {
     if (*h <= 0) return fail("--camera-height must be positive (metres)");
     cameraHeightM = *h;
   }
+  if (hintReach) {
+    auto r = parseNumber(*hintReach, "--hint-reach");
+    if (!r) return fail(r.message());
+    if (!(*r >= 2 && *r <= 200)) return fail("--hint-reach " + *hintReach + " px: expected 2-200 px");
+    options.hintReachPx = *r;
+  }
 
-  const std::string& photoPath = positionals[0];
+  // A rough shot: its photo, camera and other fields; its corners the hint.
+  metrology::Shot shot;
+  json keptFields = json::object();
+  if (hintPath) {
+    auto hinted = modeling::readShotFile(*hintPath, &keptFields);
+    if (!hinted) return fail(hinted.message());
+    shot = std::move(*hinted);
+    options.hintPx = shot.cornersPx;
+    if (!options.focalPx && shot.focalPx > 0) options.focalPx = shot.focalPx;
+    if (!options.principalPointPx && shot.principalPointPx) options.principalPointPx = shot.principalPointPx;
+    if (!cameraHeightM) cameraHeightM = shot.cameraHeightM;
+    keptFields.erase("detection");
+  }
+  const std::string photoPath = positionals.empty() ? shot.imagePath : positionals[0];
   std::error_code ec;
   if (!fs::is_regular_file(photoPath, ec)) return fail(photoPath + ": no such file");
   // The photo as shown (its EXIF orientation applied, as every reader of the shot
@@ -139,48 +193,58 @@ int runDetect(Args& args) {
   const cv::Mat& photo = read->bgr;
   for (const std::string& note : read->notes) std::fprintf(stderr, "note: %s\n", note.c_str());
   std::optional<modeling::ExifFocal> exifFocal;
-  if (!focal && read->focal) {
+  if (!options.focalPx && read->focal) {
     exifFocal = read->focal;
     options.focalPx = exifFocal->focalPx;
+  }
+  if (hintPath && shot.imageWidth > 0 && (shot.imageWidth != photo.cols || shot.imageHeight != photo.rows)) {
+    return fail(*hintPath + ": its image_size is " + std::to_string(shot.imageWidth) + "x" +
+                std::to_string(shot.imageHeight) + " but " + photoPath + " is " + std::to_string(photo.cols) + "x" +
+                std::to_string(photo.rows));
   }
 
   auto detection = metrology::detect::detectCorridor(photo, options);
   if (!detection) return fail(photoPath + ": " + detection.message());
   for (const std::string& warning : detection->warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
-  if (!detection->found) {
-    std::fprintf(stderr, "no corridor found in %s: %s\n", photoPath.c_str(), detection->notFoundReason.c_str());
-    return kExitNotFound;
-  }
 
-  metrology::Shot shot;
+  const std::string focalSource = exifFocal ? exifFocal->source
+                                  : hintPath && !focal ? std::string("shot")
+                                                       : metrology::detect::focalSourceName(detection->focalSource);
   shot.imagePath = photoPath;
   shot.imageWidth = photo.cols;
   shot.imageHeight = photo.rows;
   shot.focalPx = detection->focalPx;
-  if (exifFocal && exifFocal->focalMm) shot.focalMm = exifFocal->focalMm;  // kept in the EXIF's millimetres
-  const std::string focalSource = exifFocal ? exifFocal->source : metrology::detect::focalSourceName(detection->focalSource);
+  if (exifFocal && exifFocal->focalMm) {
+    shot.focalMm = exifFocal->focalMm;  // kept in the EXIF's millimetres
+  } else if (shot.focalMm && std::abs(shot.focalMm->pixels(shot.imageWidth) - shot.focalPx) > 1e-6 * shot.focalPx) {
+    shot.focalMm.reset();  // a focal length other than the shot's millimetres: written in pixels
+  }
   shot.principalPointPx = detection->principalPointPx;
   shot.cameraHeightM = cameraHeightM;
-  if (!detection->distortion.isNone()) shot.distortion = detection->distortion;
-  for (int k = 0; k < metrology::kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
   json report = detectionJson(*detection);
   if (exifFocal) report["focal_source"] = "exif";
-  if (Status written = writeDetectedShot(*output, shot, report, focalSource); !written) {
-    return fail(written.message());
+  keptFields["focal_source"] = focalSource;
+  keptFields["detection"] = report;
+
+  if (!detection->found) {
+    std::fprintf(stderr, "no corridor found in %s: %s\n", photoPath.c_str(), detection->notFoundReason.c_str());
+    if (!detection->hasVanishingPoints) return kExitNotFound;
+    std::printf("vanishing points (focal %.1f px, %s): corridor %s, horizontal %s, vertical %s\n", detection->focalPx,
+                focalSource.c_str(), homogeneousText(detection->corridor).c_str(),
+                homogeneousText(detection->horizontal).c_str(), homogeneousText(detection->vertical).c_str());
+    if (Status written = modeling::writeVanishingPointsFile(*output, shot, keptFields); !written) {
+      return fail(written.message());
+    }
+    std::printf("wrote %s: the vanishing points, no corners (place them in the editor: photowalk edit %s)\n",
+                output->c_str(), output->c_str());
+    return kExitNotFound;
   }
+
+  if (!detection->distortion.isNone()) shot.distortion = detection->distortion;
+  for (int k = 0; k < metrology::kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
+  if (Status written = modeling::writeShotFile(*output, shot, keptFields); !written) return fail(written.message());
   if (overlayPath) {
-    const cv::Mat overlay = metrology::detect::drawDetection(photo, *detection);
-    Status drawn = writeViaTempFile(*overlayPath, [&](const fs::path& temp) -> Status {
-      bool ok = false;
-      try {
-        ok = cv::imwrite(temp.string(), overlay);
-      } catch (const cv::Exception&) {
-        ok = false;
-      }
-      if (!ok) return makeError(*overlayPath + ": cannot write the overlay (use a .png or .jpg name)");
-      return {};
-    });
-    if (!drawn) return fail(drawn.message());
+    if (Status drawn = writeOverlay(*overlayPath, photo, *detection); !drawn) return fail(drawn.message());
   }
   const glm::dvec2 vp = detection->corridor.pixel();
   std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,
@@ -191,12 +255,20 @@ int runDetect(Args& args) {
   }
   for (int k = 0; k < metrology::kCornerCount; ++k) {
     const auto& c = detection->corners[k];
-    std::printf("  %s (%8.2f, %8.2f)  confidence %.2f\n", metrology::cornerName(k), c.px.x, c.px.y, c.confidence);
+    if (options.hintPx) {
+      std::printf("  %s (%8.2f, %8.2f)  confidence %.2f  moved %.1f px\n", metrology::cornerName(k), c.px.x, c.px.y,
+                  c.confidence, glm::length(c.px - (*options.hintPx)[k]));
+    } else {
+      std::printf("  %s (%8.2f, %8.2f)  confidence %.2f\n", metrology::cornerName(k), c.px.x, c.px.y, c.confidence);
+    }
   }
-  std::printf("wrote %s (P5..P8 at the %s)\n", output->c_str(),
-              detection->nearDepth == metrology::detect::NearDepth::kMarkedCrossSection ? "marked cross-section"
-                                                                                        : "nearest depth inside the photo");
-  if (!cameraHeightM) {
+  const char* nearText = detection->nearDepth == metrology::detect::NearDepth::kMarkedCrossSection
+                             ? "marked cross-section"
+                         : detection->nearDepth == metrology::detect::NearDepth::kGiven
+                             ? "depth they were given"
+                             : "nearest depth inside the photo";
+  std::printf("wrote %s (P5..P8 at the %s)\n", output->c_str(), nearText);
+  if (!cameraHeightM && !shot.reference) {
     std::fprintf(stderr, "note: no --camera-height: add camera_height_m (or a reference) to %s before measure\n",
                  output->c_str());
   }

@@ -4,7 +4,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <optional>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "editor/edit/autosave.h"
@@ -64,6 +67,17 @@ std::array<glm::dvec2, kCornerCount> defaultCorners(int w, int h) {
 
 namespace {
 
+// The photo of a shot file that `detect` wrote without corners (vanishing points only).
+std::optional<fs::path> vanishingPointsOnlyPhoto(const fs::path& path) {
+  std::error_code ec;
+  if (fs::file_size(path, ec) > (1u << 24) || ec) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!modeling::isVanishingPointsOnly(doc) || !doc.contains("image") || !doc["image"].is_string()) return std::nullopt;
+  const fs::path image = doc["image"].get<std::string>();
+  return image.is_absolute() ? image : path.parent_path() / image;
+}
+
 bool isShotFile(const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
@@ -83,6 +97,13 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return makeError(path.string() + ": no such file");
   if (isShotFile(path)) {
+    // detect's file for a photo with vanishing points but no box: open its photo, to be
+    // saved here once the corners are placed.
+    if (auto photo = vanishingPointsOnlyPhoto(path)) {
+      OpenOptions photoOptions = options;
+      photoOptions.photoShotPath = path;
+      return open(*photo, photoOptions);
+    }
     auto loaded = modeling::loadShot(path);
     if (!loaded) return loaded.error();
     doc.path_ = path;
@@ -157,10 +178,15 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   } else {
     const std::string reason = detection ? detection->notFoundReason : detection.message();
     const int longSide = std::max(shot.imageWidth, shot.imageHeight);
-    shot.cornersPx = defaultCorners(shot.imageWidth, shot.imageHeight);
-    doc.notes_.push_back("no corridor found (" + reason + "): a default box from the image size; drag the corners onto "
-                         "the corridor's");
-    if (!doc.exifFocal_) {
+    const auto along = detection ? metrology::detect::boxAlongVanishingPoints(*detection, doc.photo_.size())
+                                 : std::nullopt;
+    shot.cornersPx = along ? *along : defaultCorners(shot.imageWidth, shot.imageHeight);
+    doc.notes_.push_back("no corridor found (" + reason + ")");
+    doc.notes_.push_back(along ? "a starting box along the photo's vanishing points: drag each corner onto the "
+                                 "corridor's"
+                               : "a default box from the image size: drag each corner onto the corridor's");
+    if (along && !doc.exifFocal_) shot.focalPx = detection->focalPx;
+    if (!doc.exifFocal_ && !(along && detection->focalSource == metrology::detect::FocalSource::kVanishingPoints)) {
       shot.focalPx = metrology::detect::kDefaultFocalOverLongSide * longSide;
       doc.openedFocalSource_ = "default: a 28 mm-equivalent lens";
       doc.notes_.push_back("focal length assumed " + fixed(shot.focalPx, 0) +
@@ -178,6 +204,49 @@ std::optional<double> Document::detectionConfidence(int corner) const {
   if (corner < 0 || corner >= kCornerCount || !confidence_[corner]) return std::nullopt;
   if (shot_.cornersPx[corner] != detectedPx_[corner]) return std::nullopt;
   return confidence_[corner];
+}
+
+Document::FitResult Document::fitCorners(double reachPx) {
+  metrology::detect::DetectOptions options;
+  options.focalPx = shot_.focalPx;
+  options.principalPointPx = shot_.principalPoint();
+  options.hintPx = shot_.cornersPx;
+  options.hintReachPx = reachPx;
+  auto detection = metrology::detect::detectCorridor(photo_, options);
+  FitResult result;
+  if (!detection) {
+    result.message = "cannot fit the corners: " + detection.message();
+    return result;
+  }
+  if (!detection->found) {
+    result.message = "cannot fit the corners: " + detection->notFoundReason;
+    return result;
+  }
+  const auto joined = [](const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) text += (text.empty() ? "" : "; ") + line;
+    return text;
+  };
+  Shot after = shot_;
+  double largest = 0;
+  for (int k = 0; k < kCornerCount; ++k) {
+    after.cornersPx[k] = detection->corners[k].px;
+    largest = std::max(largest, glm::length(after.cornersPx[k] - shot_.cornersPx[k]));
+  }
+  if (sameShot(after, shot_)) {
+    result.message = "the corners stay where they are: " + joined(detection->doubts);
+    return result;
+  }
+  apply(after, "fit corners");
+  for (int k = 0; k < kCornerCount; ++k) {
+    detectedPx_[k] = after.cornersPx[k];
+    confidence_[k] = detection->corners[k].confidence;
+  }
+  result.moved = true;
+  result.confident = detection->confident;
+  result.message = "corners fitted to the photo's edges (moved up to " + fixed(largest, 1) + " px)" +
+                   (detection->confident ? "" : "; unsure: " + joined(detection->doubts));
+  return result;
 }
 
 void Document::apply(const Shot& after, std::string label) {

@@ -94,6 +94,18 @@ class Document {
   // editor". Save writes it as the shot file's "focal_source" (unless it is the file's).
   std::string focalSource() const;
 
+  // Fits the eight corners, from where they are now, to the photo's edges and
+  // vanishing points (metrology/detect's hint: each side looked for within
+  // `reachPx`), as one undo step "fit corners"; the fitted corners then show their
+  // confidence. The message says how it went (how far the corners moved, or why the
+  // photo does not bear the box out, the corners then staying where they were).
+  struct FitResult {
+    bool moved = false;
+    bool confident = false;
+    std::string message;
+  };
+  FitResult fitCorners(double reachPx = 25);
+
   // Makes `after` the shot, as one undo step from the current one; nothing when equal.
   void apply(const metrology::Shot& after, std::string label);
   // An edit in progress (a drag): setLive changes the shot without a step; commitLive

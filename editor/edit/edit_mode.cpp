@@ -201,6 +201,9 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
     case GLFW_KEY_F:
       canvas_.fit();
       break;
+    case GLFW_KEY_E:
+      fitCorners(shell);
+      break;
     case GLFW_KEY_H:
       showOverlay_ = !showOverlay_;
       break;
@@ -316,6 +319,12 @@ void EditMode::undo(app::Shell& shell) {
 void EditMode::redo(app::Shell& shell) {
   if (!doc_ || drag_) return;
   if (!doc_->redo()) shell.showMessage("nothing to redo");
+}
+
+void EditMode::fitCorners(app::Shell& shell) {
+  if (!doc_) return;
+  if (drag_) endDrag(true);
+  shell.showMessage(doc_->fitCorners().message);
 }
 
 void EditMode::save(app::Shell& shell) {

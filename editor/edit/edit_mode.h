@@ -115,6 +115,8 @@ class EditMode : public app::AppMode {
   void select(int corner);
   void undo(app::Shell& shell);
   void redo(app::Shell& shell);
+  // E: the eight corners fitted to the photo's edges from where they are (Document::fitCorners).
+  void fitCorners(app::Shell& shell);
   void save(app::Shell& shell);
   void walk(app::Shell& shell);
   void applyEdit(app::Shell& shell, const metrology::Shot& after, const std::string& label);

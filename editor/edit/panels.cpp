@@ -27,6 +27,7 @@ const char* const kKeys =
     "Tab, Shift+Tab     next, previous corner\n"
     "Alt+1..8           select P1..P8\n"
     "arrow keys         nudge 1 px (Shift: 0.1 px)\n"
+    "E                  fit the corners to the photo's edges\n"
     "Esc                cancel a drag\n"
     "Ctrl+Z             undo\n"
     "Ctrl+Shift+Z, Ctrl+Y  redo\n"
@@ -117,6 +118,8 @@ void EditMode::drawPanel(app::Shell& shell) {
   ImGui::BeginDisabled(!doc_->history().canRedo());
   if (ImGui::Button("Redo")) redo(shell);
   ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Fit corners (E)")) fitCorners(shell);
   ImGui::SameLine();
   ImGui::BeginDisabled(!live_.measurement);
   if (ImGui::Button("Walk (W)")) walk(shell);

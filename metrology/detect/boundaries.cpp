@@ -111,7 +111,23 @@ class AngularProfile {
   Features spread_{};
 };
 
-// Share of the ray's outer half where an edge runs along it.
+}  // namespace
+
+const char* boundaryName(int boundary) {
+  static const char* const kNames[kBoundaryCount] = {"floor-left", "floor-right", "ceiling-left", "ceiling-right"};
+  return boundary >= 0 && boundary < kBoundaryCount ? kNames[boundary] : "?";
+}
+
+double distanceToBorder(const WorkingImage& image, glm::dvec2 origin, glm::dvec2 direction) {
+  const double w = image.bgr.cols - 1, h = image.bgr.rows - 1;
+  double t = std::numeric_limits<double>::infinity();
+  if (direction.x > 1e-12) t = std::min(t, (w - origin.x) / direction.x);
+  if (direction.x < -1e-12) t = std::min(t, -origin.x / direction.x);
+  if (direction.y > 1e-12) t = std::min(t, (h - origin.y) / direction.y);
+  if (direction.y < -1e-12) t = std::min(t, -origin.y / direction.y);
+  return std::isfinite(t) ? std::max(t, 0.0) : 0.0;
+}
+
 double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle) {
   const glm::dvec2 dir(std::cos(angle), std::sin(angle));
   const glm::dvec2 normal(-dir.y, dir.x);
@@ -128,21 +144,27 @@ double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle) {
   return samples > 0 ? static_cast<double>(covered) / samples : 0.0;
 }
 
-}  // namespace
 
-const char* boundaryName(int boundary) {
-  static const char* const kNames[kBoundaryCount] = {"floor-left", "floor-right", "ceiling-left", "ceiling-right"};
-  return boundary >= 0 && boundary < kBoundaryCount ? kNames[boundary] : "?";
-}
-
-double distanceToBorder(const WorkingImage& image, glm::dvec2 origin, glm::dvec2 direction) {
-  const double w = image.bgr.cols - 1, h = image.bgr.rows - 1;
-  double t = std::numeric_limits<double>::infinity();
-  if (direction.x > 1e-12) t = std::min(t, (w - origin.x) / direction.x);
-  if (direction.x < -1e-12) t = std::min(t, -origin.x / direction.x);
-  if (direction.y > 1e-12) t = std::min(t, (h - origin.y) / direction.y);
-  if (direction.y < -1e-12) t = std::min(t, -origin.y / direction.y);
-  return std::isfinite(t) ? std::max(t, 0.0) : 0.0;
+double sharpenBoundaryAngle(const WorkingImage& image, glm::dvec2 vp, double angle, double reachRad) {
+  const double end = distanceToBorder(image, vp, {std::cos(angle), std::sin(angle)});
+  if (end < 10) return angle;
+  // Steps of a third of a pixel at the ray's end. The edge test reaches a pixel either
+  // side, so the best coverage is a plateau a few steps wide: of the plateaus within
+  // 0.02 of the best, the one nearest `angle`, at its middle.
+  const double step = 1.0 / (3.0 * end);
+  const int n = static_cast<int>(reachRad / step);
+  std::vector<double> coverage(2 * n + 1);
+  for (int i = -n; i <= n; ++i) coverage[i + n] = rayEdgeCoverage(image, vp, angle + i * step);
+  const double best = *std::max_element(coverage.begin(), coverage.end());
+  int nearest = -1;
+  for (int d = 0; d <= n && nearest < 0; ++d) {
+    if (coverage[n - d] >= best - 0.02) nearest = n - d;
+    else if (coverage[n + d] >= best - 0.02) nearest = n + d;
+  }
+  int first = nearest, last = nearest;
+  while (first > 0 && coverage[first - 1] >= best - 0.02) --first;
+  while (last < 2 * n && coverage[last + 1] >= best - 0.02) ++last;
+  return angle + (0.5 * (first + last) - n) * step;
 }
 
 Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vp, double horizonAngle) {
@@ -181,6 +203,41 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     }
     out.angle[boundary] = wrapAngle(angleOf(fineBin) - 0.5 * 2 * kPi / kBins);  // the bin's start is the step
     out.contrast[boundary] = coarseStrength;
+    out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
+  }
+  return out;
+}
+
+RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vp, const std::array<double, kBoundaryCount>& angle,
+                                  const std::array<double, kBoundaryCount>& reachRad) {
+  const AngularProfile profile(image, vp);
+  RecedingBoundaries out;
+  for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
+    // The strongest step within reach (the same coarse window as the whole search),
+    // then placed by the sharpest colour step within a degree of it.
+    const int centre = binOf(angle[boundary]);
+    const int reach = std::max(1, static_cast<int>(reachRad[boundary] / (2 * kPi) * kBins));
+    double coarseStrength = -1;
+    int coarseBin = centre;
+    for (int i = -reach; i <= reach; ++i) {
+      const int bin = (centre + i + kBins) % kBins;
+      const double s = profile.step(bin, kCoarseWindowBins);
+      if (s > coarseStrength) coarseStrength = s, coarseBin = bin;
+    }
+    out.contrast[boundary] = std::max(coarseStrength, 0.0);
+    if (coarseStrength < kMinContrast) {
+      out.angle[boundary] = wrapAngle(angle[boundary]);  // nothing to go by: as given
+    } else {
+      const int range = std::min(reach, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
+      double fineStrength = -1;
+      int fineBin = coarseBin;
+      for (int i = -range; i <= range; ++i) {
+        const int bin = (coarseBin + i + kBins) % kBins;
+        const double s = profile.step(bin, kFineWindowBins, /*colourOnly=*/true);
+        if (s > fineStrength) fineStrength = s, fineBin = bin;
+      }
+      out.angle[boundary] = wrapAngle(angleOf(fineBin) - 0.5 * 2 * kPi / kBins);
+    }
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
   }
   return out;

@@ -39,6 +39,24 @@ struct RecedingBoundaries {
 Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vanishingPoint,
                                                   double horizonAngle);
 
+// Share of the ray from `vp` at `angle` (working pixels, radians) whose outer half
+// runs along an image edge.
+double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle);
+
+// The ray within `reachRad` of `angle` that runs along an edge over most of its outer
+// half (rayEdgeCoverage), the nearest to `angle` among equals: a boundary a person
+// placed roughly, or one the angular profile found, put on the image's edge.
+double sharpenBoundaryAngle(const WorkingImage& image, glm::dvec2 vp, double angle, double reachRad);
+
+// The boundaries near the angles a person gave (radians, one per boundary): in each,
+// the strongest step of the angular profile within `reachRad` of it, placed by the
+// sharpest colour step near that, as findRecedingBoundaries places them (a tile joint
+// along the floor is an edge but no step: the floor's colour on both sides). Where no
+// step stands out, the angle given.
+RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vanishingPoint,
+                                  const std::array<double, kBoundaryCount>& angle,
+                                  const std::array<double, kBoundaryCount>& reachRad);
+
 // Distance from `origin` along the unit `direction` to the image border (working pixels).
 double distanceToBorder(const WorkingImage& image, glm::dvec2 origin, glm::dvec2 direction);
 

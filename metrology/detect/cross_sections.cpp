@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <vector>
 
 #include "metrology/detect/geometry.h"
@@ -115,24 +117,33 @@ double CrossSectionFamily::largestInside(cv::Size size, double marginPx) const {
   return lo;
 }
 
-Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family) {
+namespace {
+
+// The far-wall scan over t in [tFrom, tTo]: the best-scoring section (the middle of
+// its plateau), or nullopt when no section there has edges on all four sides.
+// `sidesSeen`: how many of the four sides must be edges (the best ones scored).
+std::optional<CrossSectionMatch> scanFarWall(const WorkingImage& image, const CrossSectionFamily& family, double tFrom,
+                                             double tTo, int sidesSeen = 4) {
   const double tMax = family.largestInside(image.bgr.size(), 2.0);
-  if (tMax < 4) return makeError("the corridor's boundaries leave the photo at once");
+  tTo = std::min(tTo, tMax);
+  std::optional<Quad> outer = family.at(tMax);
+  if (tMax < 4 || !outer) return std::nullopt;
   std::array<RayEdges, kBoundaryCount> rays;
   const glm::dvec2 vp = family.vanishingPoint();
-  std::optional<Quad> outer = family.at(tMax);
   for (int b = 0; b < kBoundaryCount; ++b) {
     rays[b] = rayEdges(image, vp, glm::normalize((*outer)[std::array{2, 3, 0, 1}[b]] - vp));
   }
   constexpr std::array<int, kBoundaryCount> kCornerOfBoundary = {2, 3, 0, 1};
 
   std::vector<CrossSectionMatch> scan;
-  for (double t = 3.0; t <= tMax; t += kStepPx) {
+  for (double t = std::max(3.0, tFrom); t <= tTo; t += kStepPx) {
     auto q = family.at(t);
     if (!q) continue;
     CrossSectionMatch m = evaluate(image, *q, t);
     m.score = -1;
-    if (minOf(m.sideCoverage) >= kMinSideCoverage) {
+    std::array<double, 4> sorted = m.sideCoverage;
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    if (sorted[sidesSeen - 1] >= kMinSideCoverage) {
       double outside = 0, inside = 0;
       for (int b = 0; b < kBoundaryCount; ++b) {
         const double r = glm::length((*q)[kCornerOfBoundary[b]] - vp);
@@ -140,49 +151,98 @@ Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSect
         inside += rays[b].coverage(0.5 * r, r - 2);
       }
       m.boundaryContrast = (outside - inside) / kBoundaryCount;
-      m.score = meanOf(m.sideCoverage) + m.boundaryContrast;
+      double seen = 0;
+      for (int k = 0; k < sidesSeen; ++k) seen += sorted[k] / sidesSeen;
+      m.score = seen + m.boundaryContrast;
     }
     scan.push_back(m);
   }
-  if (scan.empty()) return makeError("no far wall: the corridor's boundaries leave the photo at once");
+  if (scan.empty()) return std::nullopt;
   // The edge maps are a pixel wide on either side, so the best score is a plateau a
   // few steps long: take its middle.
   size_t top = 0;
   for (size_t i = 0; i < scan.size(); ++i)
     if (scan[i].score > scan[top].score) top = i;
+  if (scan[top].score < 0) return std::nullopt;
   size_t first = top, last = top;
   while (first > 0 && scan[first - 1].score >= scan[top].score - 0.02) --first;
   while (last + 1 < scan.size() && scan[last + 1].score >= scan[top].score - 0.02) ++last;
-  const CrossSectionMatch best = scan[(first + last) / 2];
-  if (best.score < kMinFarWallScore) {
-    return makeError("no far wall: no rectangle across the corridor where its boundaries begin");
-  }
-  return best;
+  return scan[(first + last) / 2];
 }
 
-std::optional<CrossSectionMatch> findMarkedCrossSection(const WorkingImage& image, const CrossSectionFamily& family,
-                                                        double farWallT) {
+}  // namespace
+
+Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family) {
+  if (family.largestInside(image.bgr.size(), 2.0) < 4) return makeError("the corridor's boundaries leave the photo at once");
+  const auto best = scanFarWall(image, family, 3.0, std::numeric_limits<double>::infinity());
+  if (!best || best->score < kMinFarWallScore) {
+    return makeError("no far wall: no rectangle across the corridor where its boundaries begin");
+  }
+  return *best;
+}
+
+std::optional<CrossSectionMatch> findFarWallNear(const WorkingImage& image, const CrossSectionFamily& family,
+                                                 double tCentre, double reach) {
+  return scanFarWall(image, family, tCentre - reach, tCentre + reach, /*sidesSeen=*/3);
+}
+
+double nearestSection(const CrossSectionFamily& family, const Quad& q, double tFrom, double tTo) {
+  double bestT = tFrom, bestCost = std::numeric_limits<double>::infinity();
+  for (double t = std::max(0.5, tFrom); t <= tTo; t += 0.25) {
+    auto at = family.at(t);
+    if (!at) continue;
+    double cost = 0;
+    for (int k = 0; k < 4; ++k) cost += glm::dot((*at)[k] - q[k], (*at)[k] - q[k]);
+    if (cost < bestCost) bestCost = cost, bestT = t;
+  }
+  return bestT;
+}
+
+namespace {
+
+// The marked sections (all four sides on image edges, a local maximum of the score
+// within 3 px) over t in [tFrom, tTo], nearest the far wall first, each at the inner
+// end of its plateau (a band's far edge comes first; the edge maps reach a pixel
+// beyond each edge, so the plateau starts a pixel short of it).
+std::vector<CrossSectionMatch> markedSections(const WorkingImage& image, const CrossSectionFamily& family, double tFrom,
+                                              double tTo) {
   const double tMax = family.largestInside(image.bgr.size(), 2.0);
   std::vector<CrossSectionMatch> scan;
-  for (double t = 1.2 * farWallT; t <= tMax; t += kStepPx) {
+  for (double t = std::max(1.0, tFrom); t <= std::min(tTo, tMax); t += kStepPx) {
     auto q = family.at(t);
     if (!q) continue;
     CrossSectionMatch m = evaluate(image, *q, t);
     m.score = meanOf(m.sideCoverage);
     scan.push_back(m);
   }
-  // The first local maximum (within 3 px) that passes: the deepest marked section,
-  // at the inner end of its plateau (a band's far edge comes first). The edge maps
-  // reach a pixel beyond each edge, so the plateau starts a pixel short of it.
   const size_t kOnePixel = static_cast<size_t>(std::lround(1.0 / kStepPx));
+  std::vector<CrossSectionMatch> marked;
   for (size_t i = 0; i < scan.size(); ++i) {
     const CrossSectionMatch& m = scan[i];
     if (minOf(m.sideCoverage) < kMarkedMinSide || m.score < kMarkedMinMean) continue;
     bool isPeak = true;
     for (size_t j = i > 6 ? i - 6 : 0; j < std::min(scan.size(), i + 7); ++j) isPeak &= scan[j].score <= m.score;
-    if (isPeak) return scan[std::min(i + kOnePixel, scan.size() - 1)];
+    if (isPeak) marked.push_back(scan[std::min(i + kOnePixel, scan.size() - 1)]);
   }
-  return std::nullopt;
+  return marked;
+}
+
+}  // namespace
+
+std::optional<CrossSectionMatch> findMarkedCrossSection(const WorkingImage& image, const CrossSectionFamily& family,
+                                                        double farWallT) {
+  // The deepest marked section.
+  auto marked = markedSections(image, family, 1.2 * farWallT, std::numeric_limits<double>::infinity());
+  if (marked.empty()) return std::nullopt;
+  return marked.front();
+}
+
+std::optional<CrossSectionMatch> findMarkedCrossSectionNear(const WorkingImage& image, const CrossSectionFamily& family,
+                                                            double tCentre, double reach) {
+  auto marked = markedSections(image, family, tCentre - reach, tCentre + reach);
+  if (marked.empty()) return std::nullopt;
+  return *std::max_element(marked.begin(), marked.end(),
+                           [](const CrossSectionMatch& a, const CrossSectionMatch& b) { return a.score < b.score; });
 }
 
 }  // namespace pw::metrology::detect

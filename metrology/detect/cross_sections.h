@@ -61,9 +61,25 @@ struct CrossSectionMatch {
 // on inside it. The error says why none was found.
 Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family);
 
+// The far wall where a person (roughly) put it: the best section within `reach` of
+// t = `tCentre`, scored as findFarWall scores but over its three best-edged sides (one
+// may be hidden), with no bar on the score; nullopt when no section there has edges on
+// three sides.
+std::optional<CrossSectionMatch> findFarWallNear(const WorkingImage& image, const CrossSectionFamily& family,
+                                                 double tCentre, double reach);
+
+// The t in [tFrom, tTo] whose section lies nearest (least squares over the corners)
+// to the quad `q` (the same corner order and pixels as the family).
+double nearestSection(const CrossSectionFamily& family, const Quad& q, double tFrom, double tTo);
+
 // The nearest-to-the-far-wall section nearer the camera whose four sides all lie on
 // image edges (a band, a frame, a beam across the corridor), if any.
 std::optional<CrossSectionMatch> findMarkedCrossSection(const WorkingImage& image, const CrossSectionFamily& family,
                                                         double farWallT);
+
+// The best-marked section within `reach` of t = `tCentre` (a doorway's frame or a band
+// where a person put the near corners), if any.
+std::optional<CrossSectionMatch> findMarkedCrossSectionNear(const WorkingImage& image, const CrossSectionFamily& family,
+                                                            double tCentre, double reach);
 
 }  // namespace pw::metrology::detect

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <opencv2/core.hpp>
 
 #include "metrology/detect/boundaries.h"
 #include "metrology/detect/cross_sections.h"
@@ -11,6 +14,7 @@
 #include "metrology/detect/refine.h"
 #include "metrology/detect/room_box.h"
 #include "metrology/detect/working_image.h"
+#include "metrology/shot.h"
 
 namespace pw::metrology::detect {
 namespace {
@@ -193,7 +197,13 @@ void assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& 
 // depth in the cross-section family's terms) to the detection: the far wall's sides
 // and the boundaries beyond it fitted at full resolution, then P5..P8, and the
 // doubts it leaves. The error is the reason no corridor is there.
-Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection d, const Quad& farWork, double farT) {
+// `nearHint` (full-resolution, the Quad's order: P7 P8 P5 P6): the near section a person
+// put, kept at its depth unless it lies within reach of the nearest depth inside the photo.
+// `hiddenSide`: one far-wall side may show no edge (a cabinet before its foot, a person
+// before a corner); its corners are then where its neighbouring sides meet the fitted
+// boundaries (a corner behind a person is still where its two edges meet).
+Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection d, const Quad& farWork, double farT,
+                                      const std::optional<Quad>& nearHint = std::nullopt, bool allowHiddenSide = false) {
   const PinholeView& photo = s.photo;
   const WorkingImage& work = s.work;
   const cv::Size size = photo.size();
@@ -205,12 +215,16 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   for (int k = 0; k < 4; ++k) coarseFar[k] = work.toFull(farWork[k]);
   // Its top and bottom take their innermost edge: a floor's tile joint a pixel or three
   // beyond the foot is often the stronger, and blur merges the two.
-  const RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx,
-                                                stepHalfWidthPx, 0.5, vp);
+  RefinedSection far = refineCrossSection(photo, coarseFar, d.horizontal.point, d.vertical.point, searchPx,
+                                          stepHalfWidthPx, 0.5, vp);
+  static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
+  int hidden = -1;
   for (int side = 0; side < 4; ++side) {
     if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
-      static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
-      return makeError(std::string("the far wall's ") + kSideNames[side] + " edge is not in the photo");
+      if (!allowHiddenSide || hidden >= 0) {
+        return makeError(std::string("the far wall's ") + kSideNames[side] + " edge is not in the photo");
+      }
+      hidden = side;
     }
   }
   if (!convexAround(far.corners, vp)) return makeError("the far wall's corners do not surround the vanishing point");
@@ -237,13 +251,39 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   }
   // Fitted beyond the far wall, the rays say how well the image bears them out.
   const auto rays = refineBoundaries(photo, vp, cornerDirection, fromRadius, searchPx, stepHalfWidthPx);
+  if (hidden >= 0) {
+    // The hidden side's corners where the boundary through each meets the side beside it.
+    constexpr std::array<int, 4> kBoundaryOfCorner = {kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight};
+    constexpr std::array<std::array<int, 2>, 4> kCornerSides{{{kTopSide, kLeftSide}, {kTopSide, kRightSide},
+                                                             {kBottomSide, kLeftSide}, {kBottomSide, kRightSide}}};
+    for (int k : kSideCorners[hidden]) {
+      const int b = kBoundaryOfCorner[k];
+      const int other = kCornerSides[k][0] == hidden ? kCornerSides[k][1] : kCornerSides[k][0];
+      if (!rays[b].fit) return makeError(std::string("the far wall's ") + kSideNames[hidden] + " edge is hidden and so is its " +
+                                         boundaryName(b) + " boundary");
+      auto p = intersect(rays[b].fit->line, far.sides[other].line);
+      if (!p) return makeError(std::string("the far wall's ") + kSideNames[hidden] + " corners cannot be found");
+      far.corners[k] = *p;
+      far.cornerConfidence[k] = 0.5 * far.cornerConfidence[k] + 0.2;
+      d.corners[k] = {*p, far.cornerConfidence[k], std::hypot(rays[b].fit->positionSigmaPx(), far.sides[other].positionSigmaPx())};
+      throughCorners.angle[b] = std::atan2(p->y - vp.y, p->x - vp.x);
+    }
+    doubt(d, std::string("the far wall's ") + kSideNames[hidden] + " edge is hidden: its corners are where the boundaries meet its sides");
+  }
   const CrossSectionFamily nearFamily(s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
                                       throughCorners);
 
   // P5..P8: on a marked cross-section (band, frame) when there is one, else at the
   // nearest depth where all four stay inside the photo (the editor moves them).
   std::optional<CrossSectionMatch> marked;
-  if (!s.options.nearAtImageEdge) marked = findMarkedCrossSection(work, nearFamily, farT);
+  if (nearHint) {
+    const Quad givenWork = {work.toWorking((*nearHint)[0]), work.toWorking((*nearHint)[1]), work.toWorking((*nearHint)[2]),
+                            work.toWorking((*nearHint)[3])};
+    const double tGiven = nearestSection(nearFamily, givenWork, 1.05 * farT, 2.0 * glm::length(givenWork[2] - s.vpWork) + 2.0);
+    marked = findMarkedCrossSectionNear(work, nearFamily, tGiven, s.options.hintReachPx * work.scale);
+  } else if (!s.options.nearAtImageEdge) {
+    marked = findMarkedCrossSection(work, nearFamily, farT);
+  }
   constexpr std::array<int, 4> kNearCornerOfQuad = {6, 7, 4, 5};  // P7 P8 P5 P6
   if (marked) {
     Quad coarseNear;
@@ -259,7 +299,20 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     d.nearDepth = NearDepth::kMarkedCrossSection;
   } else {
     const CrossSectionFamily fullFamily(vp, d.horizontal.point, d.vertical.point, throughCorners);
-    const double t = fullFamily.largestInside(size, 0.01 * std::min(size.width, size.height));
+    double t = fullFamily.largestInside(size, 0.01 * std::min(size.width, size.height));
+    d.nearDepth = NearDepth::kImageEdge;
+    if (nearHint) {
+      // The depth the person gave, unless the section nearest the photo's edge is within
+      // reach of it (the convention a careful person follows too).
+      const double given = nearestSection(fullFamily, *nearHint, glm::length(far.corners[2] - vp) + 1.0, 2.0 * t);
+      const auto edge = fullFamily.at(t), atGiven = fullFamily.at(given);
+      double apart = std::numeric_limits<double>::infinity();
+      if (edge && atGiven) {
+        apart = 0;
+        for (int k = 0; k < 4; ++k) apart = std::max(apart, glm::length((*edge)[k] - (*nearHint)[k]));
+      }
+      if (apart > s.options.hintReachPx) t = given, d.nearDepth = NearDepth::kGiven;
+    }
     auto q = fullFamily.at(t);
     if (!q || t <= glm::length(far.corners[2] - vp)) return makeError("no room between the far wall and the photo's edge");
     for (int k = 0; k < 4; ++k) {
@@ -270,7 +323,6 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
       const double sigma = rays[b].fit ? rays[b].fit->positionSigmaPx() : searchPx;
       d.corners[kNearCornerOfQuad[k]] = {(*q)[k], confidence, sigma};
     }
-    d.nearDepth = NearDepth::kImageEdge;
   }
   if (!allFinite(d.corners)) return makeError("the fitted corners are degenerate");
   d.found = true;
@@ -278,6 +330,78 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   Candidate c{std::move(d), 0.0};
   for (int k = 0; k < 4; ++k) c.support += far.sides[k].coverage / 8 + (rays[k].fit ? rays[k].fit->coverage : 0.0) / 8;
   return c;
+}
+
+// Where four image lines meet, in the least-squares sense (pixels); nullopt when they
+// are nearly parallel.
+std::optional<glm::dvec2> meetingPoint(const std::array<glm::dvec3, 4>& lines) {
+  cv::Matx22d a = cv::Matx22d::zeros();
+  cv::Vec2d b(0, 0);
+  for (const glm::dvec3& l : lines) {
+    a(0, 0) += l.x * l.x, a(0, 1) += l.x * l.y, a(1, 1) += l.y * l.y;
+    b(0) -= l.x * l.z, b(1) -= l.y * l.z;
+  }
+  a(1, 0) = a(0, 1);
+  if (std::abs(cv::determinant(a)) < 1e-9) return std::nullopt;
+  const cv::Vec2d p = a.inv() * b;
+  return glm::dvec2(p(0), p(1));
+}
+
+// The box a person placed roughly (`hint`, pinhole pixels), fitted to the photo: each
+// boundary put on the edge nearest the person's line (from the vanishing point to the
+// near corner, the longer lever), the far wall at the best-edged section within reach
+// of where they put it, then the full-resolution fits of a detection, with P5..P8 at
+// the depth given. Where the photo does not bear the box out, the person's corners
+// come back as they were, with no confidence and the reason as a doubt.
+CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const std::array<glm::dvec2, 8>& hint) {
+  const WorkingImage& work = s.work;
+  const double reach = s.options.hintReachPx;
+  constexpr std::array<int, kBoundaryCount> kFarOf = {P3, P4, P1, P2}, kNearOf = {P5, P6, P7, P8};
+  const auto asGiven = [&](CorridorDetection out, const std::string& why) {
+    for (int k = 0; k < kCornerCount; ++k) out.corners[k] = {hint[k], 0.0, reach};
+    out.found = true;
+    out.nearDepth = NearDepth::kGiven;
+    doubt(out, why);
+    return out;
+  };
+  std::array<glm::dvec3, 4> lines{};
+  for (int b = 0; b < kBoundaryCount; ++b) lines[b] = lineThrough(hint[kFarOf[b]], hint[kNearOf[b]]);
+  const std::optional<glm::dvec2> given = meetingPoint(lines);
+  if (!given) return asGiven(d, "the corners' receding lines do not meet");
+  if (glm::length(*given - s.vp) > std::max(2.0 * reach, 0.03 * std::hypot(work.bgr.cols, work.bgr.rows) / work.scale)) {
+    return asGiven(d, "the corners' receding lines meet " + std::to_string(std::lround(glm::length(*given - s.vp))) +
+                          " px from the photo's vanishing point");
+  }
+  std::array<double, kBoundaryCount> angle{}, angleReach{};
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    const glm::dvec2 out = hint[kNearOf[b]] - s.vp;
+    const double radius = glm::length(out);
+    if (radius < 1) return asGiven(d, "a near corner lies on the vanishing point");
+    angle[b] = std::atan2(out.y, out.x);
+    angleReach[b] = std::max(reach / radius, 0.2 * 3.14159265358979 / 180);
+  }
+  const RecedingBoundaries boundaries = boundariesNear(work, s.vpWork, angle, angleReach);
+  const CrossSectionFamily family(s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
+                                  boundaries);
+  const Quad farGiven = {work.toWorking(hint[P1]), work.toWorking(hint[P2]), work.toWorking(hint[P3]),
+                         work.toWorking(hint[P4])};
+  const double tGiven = nearestSection(family, farGiven, 1.0, 2.0 * glm::length(farGiven[2] - s.vpWork) + 2.0);
+  const std::optional<CrossSectionMatch> far = findFarWallNear(work, family, tGiven, reach * work.scale);
+  const std::optional<Quad> farWork = far ? std::optional<Quad>(far->corners) : family.at(tGiven);
+  if (!farWork) return asGiven(d, "the far wall's corners do not lie on the boundaries");
+  const Quad nearGiven = {hint[P7], hint[P8], hint[P5], hint[P6]};
+  auto done = completeFromFarWall(s, d, *farWork, far ? far->t : tGiven, nearGiven, /*allowHiddenSide=*/true);
+  if (!done) return asGiven(d, done.message());
+  CorridorDetection fitted = std::move(done->detection);
+  if (!far) doubt(fitted, "no far wall with edges on all four sides near where it was put");
+  for (int k = 0; k < kCornerCount; ++k) {
+    const double moved = glm::length(fitted.corners[k].px - hint[k]);
+    if (moved > 2 * reach) {
+      return asGiven(d, std::string(cornerName(k)) + " would move " + std::to_string(std::lround(moved)) +
+                            " px from where it was put");
+    }
+  }
+  return fitted;
 }
 
 }  // namespace
@@ -292,7 +416,12 @@ const char* focalSourceName(FocalSource source) {
 }
 
 const char* nearDepthName(NearDepth depth) {
-  return depth == NearDepth::kMarkedCrossSection ? "marked_cross_section" : "image_edge";
+  switch (depth) {
+    case NearDepth::kMarkedCrossSection: return "marked_cross_section";
+    case NearDepth::kImageEdge: return "image_edge";
+    case NearDepth::kGiven: return "given";
+  }
+  return "?";
 }
 
 namespace {
@@ -331,6 +460,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   d.corridor = frame->corridor;
   d.horizontal = frame->horizontal;
   d.vertical = frame->vertical;
+  d.hasVanishingPoints = true;
   const glm::dvec2 vp = d.corridor.pixel();
   if (!(vp.x >= 0 && vp.y >= 0 && vp.x <= size.width - 1 && vp.y <= size.height - 1)) {
     return notFound(d, "the lines meet outside the photo, not at a corridor's end");
@@ -353,6 +483,11 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // boundaries (the clean corridors), then, when that fails or leaves doubts, from the
   // room's box fitted to all the edges (clutter hides boundaries).
   const FarWallSearch search{photo, work, options, vp, work.toWorking(vp)};
+  if (options.hintPx) {
+    CorridorDetection fitted = fromHint(search, d, *options.hintPx);
+    if (looseVanishingPoint) doubt(fitted, *looseVanishingPoint);
+    return fitted;
+  }
   std::string profileReason;
   std::optional<Candidate> fromProfile;
   const glm::dvec2 horizon = directionTowards(d.horizontal.point, vp);
@@ -418,6 +553,13 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   if (options.focalPx && !(*options.focalPx > 0 && std::isfinite(*options.focalPx))) {
     return makeError("the focal length must be a positive number of pixels");
   }
+  if (options.hintPx) {
+    for (int k = 0; k < kCornerCount; ++k) {
+      const glm::dvec2 p = (*options.hintPx)[k];
+      if (!(std::isfinite(p.x) && std::isfinite(p.y))) return makeError(std::string("the hint's ") + cornerName(k) + " is not a number");
+    }
+    if (!(options.hintReachPx > 0 && std::isfinite(options.hintReachPx))) return makeError("the hint's reach must be positive");
+  }
   const cv::Size size = photo.size();
   const glm::dvec2 pp = options.principalPointPx.value_or(glm::dvec2((size.width - 1) * 0.5, (size.height - 1) * 0.5));
   if (!(pp.x >= 0 && pp.y >= 0 && pp.x <= size.width - 1 && pp.y <= size.height - 1)) {
@@ -437,8 +579,13 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   // full-resolution fits reading the photo through the lens, the corners taken back
   // into the photo. The vanishing points stay the pinhole image's.
   const WorkingImage pinholeWork = undistortWorkingImage(work, lens->lens);
+  DetectOptions pinholeOptions = options;
+  if (options.hintPx) {
+    // The person's corners are the photo's pixels: where the pinhole image has them.
+    for (glm::dvec2& corner : *pinholeOptions.hintPx) corner = undistortPixel(lens->lens, corner).value_or(corner);
+  }
   auto d = findCorridor(PinholeView(photo, lens->lens), pinholeWork,
-                        detectLineSegments(pinholeWork.gray, pinholeWork.scale, minSegmentPx), options, pp);
+                        detectLineSegments(pinholeWork.gray, pinholeWork.scale, minSegmentPx), pinholeOptions, pp);
   if (!d) return d;
   // k1 fixes the bend in pixels as k1 / f²: the same bend for the focal length found.
   const double rescale = d->focalPx / lens->lens.focalPx;
@@ -447,6 +594,34 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   if (!d->found) return d;
   for (CornerEstimate& corner : d->corners) corner.px = distortPixel(lens->lens, corner.px);
   return d;
+}
+
+std::optional<std::array<glm::dvec2, 8>> boxAlongVanishingPoints(const CorridorDetection& d, cv::Size size) {
+  if (!d.hasVanishingPoints || !d.corridor.isFinite()) return std::nullopt;
+  const glm::dvec2 vp = d.corridor.pixel();
+  if (!(vp.x >= 0 && vp.y >= 0 && vp.x <= size.width - 1 && vp.y <= size.height - 1)) return std::nullopt;
+  const double half = 0.1 * std::min(size.width, size.height);
+  const glm::dvec2 across = directionTowards(d.horizontal.point, vp, {1, 0});
+  const glm::dvec2 down = directionTowards(d.vertical.point, vp, {0, 1});
+  const glm::dvec3 left = lineThrough(homogeneous(vp - half * across), d.vertical.point);
+  const glm::dvec3 right = lineThrough(homogeneous(vp + half * across), d.vertical.point);
+  const glm::dvec3 top = lineThrough(homogeneous(vp - half * down), d.horizontal.point);
+  const glm::dvec3 bottom = lineThrough(homogeneous(vp + half * down), d.horizontal.point);
+  const auto p1 = intersect(top, left), p2 = intersect(top, right), p3 = intersect(bottom, left),
+             p4 = intersect(bottom, right);
+  if (!p1 || !p2 || !p3 || !p4) return std::nullopt;
+  RecedingBoundaries rays;
+  const std::array<glm::dvec2, kBoundaryCount> farCorner = {*p3, *p4, *p1, *p2};  // floor-left ... ceiling-right
+  for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = std::atan2(farCorner[b].y - vp.y, farCorner[b].x - vp.x);
+  const CrossSectionFamily family(vp, d.horizontal.point, d.vertical.point, rays);
+  const auto near = family.at(family.largestInside(size, 0.01 * std::min(size.width, size.height)));
+  if (!near) return std::nullopt;
+  std::array<glm::dvec2, 8> box{};
+  box[P1] = *p1, box[P2] = *p2, box[P3] = *p3, box[P4] = *p4;
+  box[P7] = (*near)[0], box[P8] = (*near)[1], box[P5] = (*near)[2], box[P6] = (*near)[3];
+  for (const glm::dvec2& p : box)
+    if (!(std::isfinite(p.x) && std::isfinite(p.y))) return std::nullopt;
+  return box;
 }
 
 }  // namespace pw::metrology::detect

@@ -45,10 +45,17 @@ struct DetectOptions {
   // Fit the lens's radial distortion to the photo's straight lines (distortion.h) and,
   // when they show one, detect on the photo undistorted.
   bool estimateDistortion = true;
+  // Corners a person placed roughly (the photo's pixels, P1..P8): instead of searching
+  // the whole photo, detection fits them to its edges and vanishing points, each side
+  // and boundary looked for within hintReachPx of where they were put. P5..P8 keep the
+  // depth they were given (on the fitted boundaries), or go to the nearest depth inside
+  // the photo when they were put within reach of it.
+  std::optional<std::array<glm::dvec2, 8>> hintPx;
+  double hintReachPx = 25;
 };
 
 enum class FocalSource { kGiven, kVanishingPoints, kDefault };
-enum class NearDepth { kMarkedCrossSection, kImageEdge };
+enum class NearDepth { kMarkedCrossSection, kImageEdge, kGiven };
 const char* focalSourceName(FocalSource source);
 const char* nearDepthName(NearDepth depth);
 
@@ -66,6 +73,9 @@ struct CornerEstimate {
 struct CorridorDetection {
   bool found = false;
   std::string notFoundReason;  // one line when !found: why this is not a corridor photo
+  // The Manhattan frame was found (corridor, horizontal and vertical below are set),
+  // whether or not a corridor's box was: a person or the editor can still use them.
+  bool hasVanishingPoints = false;
 
   double focalPx = 0;
   FocalSource focalSource = FocalSource::kGiven;
@@ -93,5 +103,13 @@ struct CorridorDetection {
 // the reason. Never makes corners up: every corner lies on fitted image edges or, for
 // P5..P8 without a marked cross-section, on fitted boundaries at the stated depth.
 Result<CorridorDetection> detectCorridor(const cv::Mat& photoBgr, const DetectOptions& options);
+
+// A starting box for a person to drag where detection found the vanishing points but
+// no box: the far wall a rectangle around the corridor's vanishing point (a fifth of
+// the photo's short side), its sides pointing at the horizontal and vertical points,
+// and P5..P8 at the nearest depth inside the photo; so every line of it already
+// recedes as the photo's do. nullopt without vanishing points, or when the corridor's
+// lies outside the photo.
+std::optional<std::array<glm::dvec2, 8>> boxAlongVanishingPoints(const CorridorDetection& detection, cv::Size size);
 
 }  // namespace pw::metrology::detect

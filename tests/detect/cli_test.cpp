@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/detect/corridor_cases.h"
+#include "tests/detect/synthetic_corridor.h"
 #include "tests/support/exif_jpeg.h"
 
 namespace {
@@ -161,6 +162,59 @@ TEST_F(DetectCommand, NoCorridorIsExitTwoAndWritesNothing) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);  // photo, stdout, stderr
 }
 
+// A photo with vanishing points but no corridor's box (a road to the horizon): exit 2,
+// the points printed and written without corners; measure refuses the file, naming
+// the editor as the way on.
+TEST_F(DetectCommand, NoBoxButVanishingPointsIsExitTwoWithThePointsWritten) {
+  const fs::path photo = dir_ / "road.png", shot = dir_ / "shot.json";
+  ASSERT_TRUE(cv::imwrite(photo.string(), pw::metrology::detect::testing::drawRoadScene()));
+  const CommandRun r = run("detect " + photo.string() + " --focal-px 700 -o " + shot.string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("no corridor found"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("vanishing points"), std::string::npos) << r.out;
+  ASSERT_TRUE(fs::exists(shot));
+  const nlohmann::json doc = nlohmann::json::parse(slurp(shot));
+  EXPECT_FALSE(doc.contains("corners_px"));
+  EXPECT_FALSE(doc["detection"]["found"].get<bool>());
+  EXPECT_FALSE(doc["detection"]["reason"].get<std::string>().empty());
+  const auto& px = doc["detection"]["vanishing_points"]["corridor"]["px"];
+  EXPECT_NEAR(px[0].get<double>(), pw::metrology::detect::testing::kRoadVanishingPoint.x, 3.0);
+  EXPECT_NEAR(px[1].get<double>(), pw::metrology::detect::testing::kRoadVanishingPoint.y, 3.0);
+  for (const char* role : {"horizontal", "vertical"}) EXPECT_TRUE(doc["detection"]["vanishing_points"].contains(role));
+  const CommandRun measure = run("measure " + shot.string());
+  EXPECT_EQ(measure.exitCode, 1);
+  EXPECT_NE(measure.err.find("photowalk edit"), std::string::npos) << measure.err;
+  EXPECT_EQ(std::count(measure.err.begin(), measure.err.end(), '\n'), 1) << measure.err;
+}
+
+// A shot whose corners a person put roughly (each 15 px off) comes back fitted: the far
+// wall within 2 px of the truth, the shot's other fields kept, each corner's move said.
+TEST_F(DetectCommand, HintFitsTheCornersOfARoughShot) {
+  const auto cases = pw::metrology::detect::testing::loadCorridorCases({"corridor_f"});
+  const auto& c = cases[0];
+  const fs::path rough = dir_ / "rough.json", fitted = dir_ / "fitted.json";
+  nlohmann::json doc = {{"image", c.imagePath}, {"focal_px", c.focalPx},
+                        {"principal_point", {c.principalPoint.x, c.principalPoint.y}},
+                        {"camera_height_m", c.cameraHeightM}, {"note", "mine"}};
+  const double offsets[8][2] = {{15, 0}, {0, -15}, {-11, 10}, {10.6, 10.6}, {-15, 0}, {0, 15}, {12, -9}, {-9, -12}};
+  for (int k = 0; k < 8; ++k) {
+    doc["corners_px"]["P" + std::to_string(k + 1)] = {c.corners[k].x + offsets[k][0], c.corners[k].y + offsets[k][1]};
+  }
+  std::ofstream(rough) << doc.dump();
+  const CommandRun r = run("detect --hint " + rough.string() + " -o " + fitted.string());
+  ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 3) << r.err;
+  EXPECT_NE(r.out.find("moved"), std::string::npos) << r.out;
+  const nlohmann::json out = nlohmann::json::parse(slurp(fitted));
+  EXPECT_EQ(out["note"], "mine");
+  EXPECT_DOUBLE_EQ(out["camera_height_m"].get<double>(), c.cameraHeightM);
+  for (int k = 0; k < 4; ++k) {
+    const auto& p = out["corners_px"]["P" + std::to_string(k + 1)];
+    EXPECT_LT(glm::length(glm::dvec2(p[0].get<double>(), p[1].get<double>()) - c.corners[k]), 2.0) << "P" << k + 1;
+  }
+  const CommandRun measure = run("measure " + fitted.string());
+  EXPECT_EQ(measure.exitCode, 0) << measure.err;
+}
+
 TEST_F(DetectCommand, BadInputIsExitOneWithOneLine) {
   const fs::path shot = dir_ / "shot.json";
   for (const std::string& args : {"detect " + (dir_ / "missing.png").string() + " -o " + shot.string(),
@@ -168,7 +222,9 @@ TEST_F(DetectCommand, BadInputIsExitOneWithOneLine) {
                                   "detect x.png -o " + shot.string() + " --focal-px abc",
                                   "detect x.png -o " + shot.string() + " --principal-point 3",
                                   "detect x.png -o " + shot.string() + " --camera-height -1",
-                                  "detect x.png -o " + shot.string() + " --frobnicate"}) {
+                                  "detect x.png -o " + shot.string() + " --frobnicate",
+                                  "detect --hint " + (dir_ / "missing.json").string() + " -o " + shot.string(),
+                                  "detect --hint x.json -o " + shot.string() + " --hint-reach 0"}) {
     const CommandRun r = run(args);
     EXPECT_EQ(r.exitCode, 1) << args;
     EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << args << ": " << r.err;

@@ -6,9 +6,15 @@
 #include <opencv2/imgproc.hpp>
 
 #include "metrology/detect/detect.h"
+#include "metrology/shot.h"
+#include "tests/detect/synthetic_corridor.h"
 
 namespace pw::metrology::detect {
 namespace {
+
+using testing::drawOutdoorScene;
+using testing::drawRoadScene;
+using testing::kRoadVanishingPoint;
 
 void expectNoCorridor(const cv::Mat& photo, const char* what) {
   auto d = detectCorridor(photo, DetectOptions{.focalPx = 700.0});
@@ -22,41 +28,6 @@ void expectNoCorridor(const cv::Mat& photo, const char* what) {
   EXPECT_FALSE(withoutFocal->found) << what << " (focal withheld)";
 }
 
-// Sky, a horizon, grass, trees (trunks and crowns), a house with a roof, noise.
-cv::Mat drawOutdoorScene(unsigned seed) {
-  cv::Mat o(600, 800, CV_8UC3);
-  for (int y = 0; y < 600; ++y)
-    for (int x = 0; x < 800; ++x)
-      o.at<cv::Vec3b>(y, x) = y < 260 ? cv::Vec3b(230 - y / 4, 190 - y / 6, 140 - y / 8) : cv::Vec3b(60, 120 + (y - 260) / 8, 70);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> xs(0, 800), sizes(20, 60);
-  for (int i = 0; i < 9; ++i) {
-    const int x = xs(rng), s = sizes(rng), base = 260 + 2 * s;
-    cv::rectangle(o, cv::Rect(x - s / 6, base - 3 * s, s / 3, 3 * s), cv::Scalar(30, 60, 90), cv::FILLED);
-    cv::circle(o, {x, base - 3 * s}, s, cv::Scalar(40, 110 + s, 50), cv::FILLED);
-  }
-  cv::rectangle(o, cv::Rect(520, 180, 160, 110), cv::Scalar(90, 110, 180), cv::FILLED);
-  const std::vector<cv::Point> roof = {{510, 180}, {600, 120}, {690, 180}};
-  cv::fillConvexPoly(o, roof, cv::Scalar(40, 40, 120));
-  cv::Mat noise(o.size(), CV_8UC3);
-  cv::randn(noise, 0, 12);
-  cv::add(o, noise, o);
-  return o;
-}
-
-// The hardest outdoor case for a corridor detector: a straight road whose edges and
-// centre line converge to a vanishing point on the horizon, with verges and sky.
-cv::Mat drawRoadScene() {
-  cv::Mat o = drawOutdoorScene(11);
-  const cv::Point vp(400, 260);
-  const std::vector<cv::Point> road = {vp, {40, 599}, {760, 599}};
-  cv::fillConvexPoly(o, road, cv::Scalar(70, 70, 75), cv::LINE_AA);
-  cv::line(o, vp, {400, 599}, cv::Scalar(240, 240, 240), 3, cv::LINE_AA);
-  cv::line(o, vp, {120, 599}, cv::Scalar(220, 220, 220), 2, cv::LINE_AA);
-  cv::line(o, vp, {680, 599}, cv::Scalar(220, 220, 220), 2, cv::LINE_AA);
-  return o;
-}
-
 TEST(DetectNotCorridor, BlankImage) { expectNoCorridor(cv::Mat(600, 800, CV_8UC3, cv::Scalar(128, 128, 128)), "blank grey"); }
 
 TEST(DetectNotCorridor, Noise) {
@@ -68,6 +39,28 @@ TEST(DetectNotCorridor, Noise) {
 TEST(DetectNotCorridor, SyntheticOutdoorScene) { expectNoCorridor(drawOutdoorScene(7), "drawn outdoor scene"); }
 
 TEST(DetectNotCorridor, SyntheticRoadWithVanishingPoint) { expectNoCorridor(drawRoadScene(), "drawn road to the horizon"); }
+
+// No box, but the road's vanishing point, the trunks' vertical and the horizon are
+// found and kept; the editor's starting box recedes to the road's point.
+TEST(DetectNotCorridor, TheVanishingPointsFoundAreKeptWithoutABox) {
+  DetectOptions options;
+  options.focalPx = 700;
+  auto d = detectCorridor(drawRoadScene(), options);
+  ASSERT_TRUE(d.ok());
+  ASSERT_FALSE(d->found);
+  ASSERT_TRUE(d->hasVanishingPoints) << d->notFoundReason;
+  ASSERT_TRUE(d->corridor.isFinite());
+  EXPECT_LT(glm::length(d->corridor.pixel() - glm::dvec2(kRoadVanishingPoint.x, kRoadVanishingPoint.y)), 3.0);
+  auto box = boxAlongVanishingPoints(*d, cv::Size(800, 600));
+  ASSERT_TRUE(box);
+  // Each receding edge of the box runs through the corridor's vanishing point.
+  for (auto [far, near] : {std::pair{P1, P7}, {P2, P8}, {P3, P5}, {P4, P6}}) {
+    const glm::dvec2 a = (*box)[far] - d->corridor.pixel(), b = (*box)[near] - d->corridor.pixel();
+    EXPECT_LT(std::abs(a.x * b.y - a.y * b.x) / glm::length(b), 1e-6 * glm::length(a) + 1e-6) << far;
+    EXPECT_GT(glm::length(b), glm::length(a)) << far;
+  }
+  for (const glm::dvec2& p : *box) EXPECT_TRUE(p.x >= 0 && p.y >= 0 && p.x <= 799 && p.y <= 599);
+}
 
 TEST(DetectNotCorridor, RealOutdoorPhotos) {
   for (const char* name : {"camera.png", "rocket.jpg"}) {

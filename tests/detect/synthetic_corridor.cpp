@@ -5,6 +5,7 @@
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace pw::metrology::detect::testing {
 namespace {
@@ -86,6 +87,41 @@ SyntheticCorridor renderCorridor(const CorridorSpec& s) {
   const glm::dvec3 d = glm::transpose(r) * glm::dvec3(0, 0, 1);
   out.vanishingPoint = glm::dvec2(c.x + s.focalPx * d.x / d.z, c.y - s.focalPx * d.y / d.z);
   return out;
+}
+
+// Sky, a horizon, grass, trees (trunks and crowns), a house with a roof, noise.
+cv::Mat drawOutdoorScene(unsigned seed) {
+  cv::Mat o(600, 800, CV_8UC3);
+  for (int y = 0; y < 600; ++y)
+    for (int x = 0; x < 800; ++x)
+      o.at<cv::Vec3b>(y, x) = y < 260 ? cv::Vec3b(230 - y / 4, 190 - y / 6, 140 - y / 8) : cv::Vec3b(60, 120 + (y - 260) / 8, 70);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> xs(0, 800), sizes(20, 60);
+  for (int i = 0; i < 9; ++i) {
+    const int x = xs(rng), s = sizes(rng), base = 260 + 2 * s;
+    cv::rectangle(o, cv::Rect(x - s / 6, base - 3 * s, s / 3, 3 * s), cv::Scalar(30, 60, 90), cv::FILLED);
+    cv::circle(o, {x, base - 3 * s}, s, cv::Scalar(40, 110 + s, 50), cv::FILLED);
+  }
+  cv::rectangle(o, cv::Rect(520, 180, 160, 110), cv::Scalar(90, 110, 180), cv::FILLED);
+  const std::vector<cv::Point> roof = {{510, 180}, {600, 120}, {690, 180}};
+  cv::fillConvexPoly(o, roof, cv::Scalar(40, 40, 120));
+  cv::Mat noise(o.size(), CV_8UC3);
+  cv::randn(noise, 0, 12);
+  cv::add(o, noise, o);
+  return o;
+}
+
+// The hardest outdoor case for a corridor detector: a straight road whose edges and
+// centre line converge to a vanishing point on the horizon, with verges and sky.
+cv::Mat drawRoadScene() {
+  cv::Mat o = drawOutdoorScene(11);
+  const cv::Point vp = kRoadVanishingPoint;
+  const std::vector<cv::Point> road = {vp, {40, 599}, {760, 599}};
+  cv::fillConvexPoly(o, road, cv::Scalar(70, 70, 75), cv::LINE_AA);
+  cv::line(o, vp, {400, 599}, cv::Scalar(240, 240, 240), 3, cv::LINE_AA);
+  cv::line(o, vp, {120, 599}, cv::Scalar(220, 220, 220), 2, cv::LINE_AA);
+  cv::line(o, vp, {680, 599}, cv::Scalar(220, 220, 220), 2, cv::LINE_AA);
+  return o;
 }
 
 }  // namespace pw::metrology::detect::testing

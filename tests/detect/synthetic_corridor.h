@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
+#include <opencv2/core/types.hpp>
 
 namespace pw::metrology::detect::testing {
 
@@ -28,5 +29,11 @@ struct SyntheticCorridor {
 };
 
 SyntheticCorridor renderCorridor(const CorridorSpec& spec);
+
+// Photos that are not corridors, 800x600: sky, a horizon, grass, trees, a house, noise;
+// and the same with a straight road converging to kRoadVanishingPoint on the horizon.
+cv::Mat drawOutdoorScene(unsigned seed);
+inline const cv::Point kRoadVanishingPoint(400, 260);
+cv::Mat drawRoadScene();
 
 }  // namespace pw::metrology::detect::testing

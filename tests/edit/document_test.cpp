@@ -1,5 +1,6 @@
 // The editor's document without a window: opening photos and shot files, undo and
 // redo as whole shots, dirty tracking, Save.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +12,7 @@
 #include "editor/edit/document.h"
 #include "metrology/measure.h"
 #include "metrology/shot_check.h"
+#include "tests/detect/synthetic_corridor.h"
 #include "tests/support/groundtruth.h"
 
 namespace pw::edit {
@@ -76,6 +78,51 @@ TEST(Document, PhotoWithNoCorridorGetsADefaultBoxThatMeasures) {
   auto m = metrology::measureCorridor(doc->shot());
   ASSERT_TRUE(m.ok()) << m.message();
   EXPECT_GT(m->size.lengthM, 0.0);
+}
+
+// E in the editor: corners a person put roughly (each 15 px off) fitted to the photo's
+// edges from where they are, as one undo step, with their confidences shown again.
+TEST(Document, FitCornersBringsARoughBoxOntoThePhotosEdges) {
+  const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_g");
+  auto doc = Document::open(truth.image);
+  ASSERT_TRUE(doc.ok()) << doc.message();
+  Shot rough = doc->shot();
+  rough.focalPx = truth.focalPx;
+  for (int k = 0; k < metrology::kCornerCount; ++k) {
+    const double a = 0.7 * k + 0.3;
+    rough.cornersPx[k] = truth.cornersPx[k] + 15.0 * glm::dvec2(std::cos(a), std::sin(a));
+  }
+  doc->apply(rough, "drag");
+  const size_t steps = doc->history().size();
+  const Document::FitResult fit = doc->fitCorners();
+  EXPECT_TRUE(fit.moved) << fit.message;
+  EXPECT_NE(fit.message.find("moved up to"), std::string::npos) << fit.message;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_LT(glm::length(doc->shot().cornersPx[k] - truth.cornersPx[k]), 2.0) << metrology::cornerName(k);
+    EXPECT_TRUE(doc->detectionConfidence(k).has_value());
+  }
+  EXPECT_EQ(doc->history().size(), steps + 1);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->shot().cornersPx, rough.cornersPx);
+}
+
+// detect's file for a photo with vanishing points but no box opens its photo, with a
+// starting box along the points, and saves to that file.
+TEST(Document, AVanishingPointsFileOpensItsPhotoWithABoxAlongThem) {
+  const fs::path photo = outputDir() / "road.png", file = outputDir() / "road.json";
+  ASSERT_TRUE(cv::imwrite(photo.string(), metrology::detect::testing::drawRoadScene()));
+  std::ofstream(file) << R"({"image": "road.png", "focal_px": 700, "detection": {"found": false, "reason": "x"}})";
+  auto doc = Document::open(file);
+  ASSERT_TRUE(doc.ok()) << doc.message();
+  EXPECT_EQ(doc->path(), file);
+  EXPECT_NE(doc->shot().cornersPx, defaultCorners(800, 600));
+  bool said = false;
+  for (const std::string& note : doc->notes()) said |= note.find("along the photo's vanishing points") != std::string::npos;
+  EXPECT_TRUE(said);
+  ASSERT_TRUE(doc->save().ok());
+  auto again = Document::open(file);
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ(again->shot().cornersPx, doc->shot().cornersPx);
 }
 
 TEST(Document, UnreadableFilesAreErrorsNamingTheFile) {
