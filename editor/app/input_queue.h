@@ -1,5 +1,6 @@
-// The one path input takes to the modes and to ImGui, live or replayed: a queue of the
-// window's (or a replay's) events, handed on one frame's worth at a time.
+// The path input takes to ImGui, live or replayed: a queue of the window's (or a
+// replay's) events and characters, handed on one frame's worth at a time. (The modes
+// get each event as it comes; the shell: shell.h.)
 //
 // ImGui 1.86's old key API sees a key or a mouse button only as it is when a frame
 // starts (io.KeysDown[], io.MouseDown[]): a key pressed and released between two frames
