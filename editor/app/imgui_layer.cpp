@@ -54,7 +54,12 @@ Result<std::unique_ptr<ImGuiLayer>> ImGuiLayer::create(Window& window, engine::R
   }
   if (io.Fonts->Fonts.empty()) io.Fonts->AddFontDefault();
 
-  layer->glfw_ = ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
+  // No callbacks: the backend's would write io.KeysDown as events arrive. It is told of
+  // nothing else either (focus, the pointer entering): beginFrame sets the pointer,
+  // buttons, keys and modifiers itself each frame, and GLFW releases what was held when
+  // the window loses the focus.
+  layer->window_ = window.handle();
+  layer->glfw_ = ImGui_ImplGlfw_InitForVulkan(window.handle(), false);
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = renderer.instance();
   info.PhysicalDevice = renderer.physicalDevice();
@@ -82,24 +87,26 @@ ImGuiLayer::~ImGuiLayer() {
   if (context_) ImGui::DestroyContext();
 }
 
-void ImGuiLayer::beginFrame(const ReplayedUiInput* replayed) {
+void ImGuiLayer::beginFrame(const UiFrameInput& input, bool live) {
   ImGui_ImplVulkan_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  if (replayed) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.MousePos = replayed->cursorPx ? ImVec2(float(replayed->cursorPx->x), float(replayed->cursorPx->y))
-                                     : ImVec2(-FLT_MAX, -FLT_MAX);
-    for (size_t i = 0; i < replayed->buttons.size(); ++i) io.MouseDown[i] = replayed->buttons[i];
-    io.MouseWheel = float(replayed->wheel.y);
-    io.MouseWheelH = float(replayed->wheel.x);
-    static_assert(sizeof(io.KeysDown) / sizeof(io.KeysDown[0]) == std::tuple_size_v<decltype(replayed->keys)>);
-    std::copy(replayed->keys.begin(), replayed->keys.end(), io.KeysDown);
-    const auto& keys = replayed->keys;
-    io.KeyCtrl = keys[GLFW_KEY_LEFT_CONTROL] || keys[GLFW_KEY_RIGHT_CONTROL];
-    io.KeyShift = keys[GLFW_KEY_LEFT_SHIFT] || keys[GLFW_KEY_RIGHT_SHIFT];
-    io.KeyAlt = keys[GLFW_KEY_LEFT_ALT] || keys[GLFW_KEY_RIGHT_ALT];
-    io.KeySuper = keys[GLFW_KEY_LEFT_SUPER] || keys[GLFW_KEY_RIGHT_SUPER];
-  }
+  ImGui_ImplGlfw_NewFrame();  // the display size and time; its polled mouse is replaced below
+  ImGuiIO& io = ImGui::GetIO();
+  const bool held = std::find(input.buttons.begin(), input.buttons.end(), true) != input.buttons.end();
+  const bool outside = live && !held && window_ && !glfwGetWindowAttrib(window_, GLFW_HOVERED);
+  io.MousePos = input.cursorPx && !outside ? ImVec2(float(input.cursorPx->x), float(input.cursorPx->y))
+                                           : ImVec2(-FLT_MAX, -FLT_MAX);
+  static_assert(sizeof(io.MouseDown) / sizeof(io.MouseDown[0]) == std::tuple_size_v<decltype(input.buttons)>);
+  std::copy(input.buttons.begin(), input.buttons.end(), io.MouseDown);
+  io.MouseWheel = float(input.wheel.y);
+  io.MouseWheelH = float(input.wheel.x);
+  static_assert(sizeof(io.KeysDown) / sizeof(io.KeysDown[0]) == std::tuple_size_v<decltype(input.keys)>);
+  std::copy(input.keys.begin(), input.keys.end(), io.KeysDown);
+  const auto& keys = input.keys;
+  io.KeyCtrl = keys[GLFW_KEY_LEFT_CONTROL] || keys[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = keys[GLFW_KEY_LEFT_SHIFT] || keys[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = keys[GLFW_KEY_LEFT_ALT] || keys[GLFW_KEY_RIGHT_ALT];
+  io.KeySuper = keys[GLFW_KEY_LEFT_SUPER] || keys[GLFW_KEY_RIGHT_SUPER];
+  for (unsigned c : input.characters) io.AddInputCharacter(c);
   ImGui::NewFrame();
 }
 

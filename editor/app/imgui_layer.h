@@ -13,27 +13,23 @@
 #include <glm/glm.hpp>
 
 #include "base/result.h"
+#include "editor/app/input_queue.h"
 #include "engine/gpu/presenter.h"
 #include "engine/gpu/renderer.h"
 #include "engine/gpu/vk_owner.h"
+
+struct GLFWwindow;
 
 namespace pw::app {
 
 class Window;
 
-// What ImGui sees of a replay's input (replay.h): while a replay plays it replaces what
-// the window reports, so that scripted clicks and keys reach ImGui's widgets.
-struct ReplayedUiInput {
-  std::optional<glm::dvec2> cursorPx;  // unset: the pointer is not over the window
-  std::array<bool, 3> buttons{};       // GLFW_MOUSE_BUTTON_LEFT, RIGHT, MIDDLE
-  glm::dvec2 wheel{0.0};               // steps since the last frame
-  std::array<bool, 512> keys{};        // by GLFW key code (ImGui 1.86's io.KeysDown)
-};
-
 class ImGuiLayer {
  public:
-  // Installs ImGui's GLFW callbacks on the window (they pass input on to the window's
-  // own, which must be installed first: Window::create does it) and uploads the font.
+  // Starts ImGui's GLFW backend without its input callbacks (they would write
+  // io.KeysDown as events arrive, so that a key pressed and released between two frames
+  // is lost): ImGui's input comes from the shell's InputQueue instead (beginFrame), and
+  // the window's callbacks stay the window's. Uploads the font.
   // The window, renderer and presenter must outlive the layer.
   static Result<std::unique_ptr<ImGuiLayer>> create(Window& window, engine::Renderer& renderer,
                                                     engine::Presenter& presenter);
@@ -41,9 +37,11 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  // The backends' new frame, then ImGui::NewFrame(); `replayed` set: ImGui's mouse and
-  // keys are those instead of the window's.
-  void beginFrame(const ReplayedUiInput* replayed = nullptr);
+  // The backends' new frame, then ImGui::NewFrame() with `input` (InputQueue::state():
+  // the pointer, buttons, keys, wheel and characters of this frame). `live`: a pointer
+  // outside the window, no button held, is reported as none (a replay's is where it
+  // was moved).
+  void beginFrame(const UiFrameInput& input, bool live);
   void endFrame();    // ImGui::Render()
   // Records the last endFrame()'s draw data; an overlay callback for Presenter::drawFrame.
   void record(VkCommandBuffer cmd) const;
@@ -55,6 +53,7 @@ class ImGuiLayer {
  private:
   ImGuiLayer() = default;
   engine::gpu::OwnedDescriptorPool pool_;
+  GLFWwindow* window_ = nullptr;
   bool context_ = false, glfw_ = false, vulkan_ = false;
 };
 

@@ -14,7 +14,26 @@
 namespace pw::app {
 namespace {
 
-constexpr const char* kShellVerbs = "key, mouse, mousemove, wheel, drop, resize, capture, mode, quit, close";
+constexpr const char* kShellVerbs = "key, mouse, mousemove, wheel, type, drop, resize, capture, mode, quit, close";
+
+// UTF-8 to code points; nullopt for a malformed sequence.
+std::optional<std::vector<unsigned>> codepointsOf(const std::string& text) {
+  std::vector<unsigned> out;
+  for (size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const int extra = byte < 0x80 ? 0 : (byte >> 5) == 0x6 ? 1 : (byte >> 4) == 0xe ? 2 : (byte >> 3) == 0x1e ? 3 : -1;
+    if (extra < 0 || i + size_t(extra) >= text.size() + (extra == 0 ? 1 : 0)) return std::nullopt;  // cut short
+    unsigned c = extra == 0 ? byte : byte & (0x3fu >> extra);
+    for (int k = 1; k <= extra; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      if ((next >> 6) != 0x2) return std::nullopt;
+      c = (c << 6) | (next & 0x3fu);
+    }
+    out.push_back(c);
+    i += extra + 1;
+  }
+  return out;
+}
 
 std::filesystem::path besideScript(const std::string& file, const std::filesystem::path& baseDir) {
   const std::filesystem::path p(file);
@@ -64,6 +83,13 @@ Result<ReplayAction> parseAction(const std::string& what, std::istream& words, c
     ScrollEvent scroll;
     if (!(words >> scroll.offset.y) || !std::isfinite(scroll.offset.y)) return makeError("expected 'wheel DY' in steps");
     return ReplayAction(scroll);
+  }
+  if (what == "type") {
+    std::string text;
+    if (!(words >> text)) return makeError("expected 'type TEXT' (no spaces)");
+    auto codepoints = codepointsOf(text);
+    if (!codepoints) return makeError("'type': the text is not UTF-8");
+    return ReplayAction(TypeRequest{std::move(*codepoints)});
   }
   if (what == "drop") {
     std::string file;

@@ -9,6 +9,7 @@
 //   81 mouse left down     a button: left, right or middle; down or up
 //   82 mousemove 200 150   the pointer to a window position in pixels
 //   83 wheel -1            the mouse wheel, in steps (+ away from the user)
+//   83 type 1.5            characters typed (no spaces; UTF-8), as a keyboard's char events
 //   84 drop a.json         a file dropped on the window (relative to the script)
 //   95 resize 800 600      resize the window
 //  100 capture out.png     save the frame of this frame (relative to the script)
@@ -16,6 +17,9 @@
 //  120 quit               end the run at once, asking nothing (as a crash would)
 //  120 close              the window's close button (a mode may ask first: unsaved changes)
 // A mode adds its own events (ReplayVerb): the walk's `viewpoint N`.
+// Input (keys, buttons, the pointer, the wheel, drops) reaches the mode at its frame, and
+// ImGui through the shell's InputQueue (input_queue.h) with the typed characters, as
+// live input does: a key's down and up on one frame reach ImGui in two frames.
 #pragma once
 
 #include <any>
@@ -44,6 +48,9 @@ struct ModeRequest {
 };
 struct QuitRequest {};   // ends the run at once, asking nothing (as a crash would)
 struct CloseRequest {};  // the window's close button: the modes may ask first
+struct TypeRequest {     // `type TEXT`: one character event per code point
+  std::vector<unsigned> codepoints;
+};
 
 // An event of a mode's own kind: `verb` and what the verb's parser made of its words
 // (the mode reads it back with std::any_cast to the type its parser returned).
@@ -53,7 +60,8 @@ struct ModeEvent {
 };
 
 using ReplayAction = std::variant<KeyEvent, MouseButtonEvent, CursorEvent, PointerMotionEvent, ScrollEvent, DropEvent,
-                                  ResizeRequest, CaptureRequest, ModeRequest, QuitRequest, ModeEvent, CloseRequest>;
+                                  ResizeRequest, CaptureRequest, ModeRequest, QuitRequest, ModeEvent, CloseRequest,
+                                  TypeRequest>;
 
 struct ReplayEvent {
   int frame = 0;

@@ -58,6 +58,9 @@ Status Shell::open() {
   if (!presenter) return presenter.error();
   presenter_ = std::move(*presenter);
   window_->setInputHandler([this](const InputEvent& event) { onWindowInput(event); });
+  window_->setCharHandler([this](unsigned codepoint) {
+    if (!replaying()) input_.push(CharEvent{codepoint});
+  });
   window_->setFramebufferSizeHandler([this](glm::ivec2 fb) { presenter_->resize(fb.x, fb.y); });
 
   auto imgui = ImGuiLayer::create(*window_, *renderer_, *presenter_);
@@ -89,8 +92,12 @@ void Shell::showMessage(const std::string& text) {
   messages_.push_back({text, frame_ + kMessageSteps});
 }
 
+// Live input: to the active mode at once (as GLFW reports it), and into the queue that
+// hands it to ImGui a frame's worth at a time (InputQueue, taken in drawFrame).
 void Shell::onWindowInput(const InputEvent& event) {
-  if (replaying() || !active_) return;  // a replay plays its own input
+  if (replaying()) return;  // a replay plays its own input
+  input_.push(event);
+  if (!active_) return;
   dispatch(event);
   if (Status switched = applyPendingMode(); !switched) {
     showMessage("error: " + switched.message());
@@ -152,20 +159,14 @@ Status Shell::playEventsDue(std::vector<std::filesystem::path>& captures) {
   const std::vector<ReplayEvent>& events = *replay_;
   while (nextEvent_ < events.size() && events[nextEvent_].frame <= frame_) {
     const ReplayEvent& e = events[nextEvent_++];
-    if (std::optional<InputEvent> input = inputOf(e.what)) {
-      std::visit(Overloaded{[&](const KeyEvent& k) {
-                              if (k.key >= 0 && size_t(k.key) < replayedUi_.keys.size()) replayedUi_.keys[k.key] = k.down;
-                            },
-                            [&](const MouseButtonEvent& b) {
-                              if (b.button >= 0 && size_t(b.button) < replayedUi_.buttons.size()) {
-                                replayedUi_.buttons[b.button] = b.down;
-                              }
-                            },
-                            [&](const CursorEvent& c) { replayedUi_.cursorPx = c.positionPx; },
-                            [&](const ScrollEvent& s) { replayedUi_.wheel += s.offset; }, [](const auto&) {}},
-                 *input);
+    if (std::optional<InputEvent> input = inputOf(e.what)) {  // as live input: the mode now, ImGui queued
+      input_.push(*input);
       dispatch(*input);
       PW_TRY(applyPendingMode());
+      continue;
+    }
+    if (const auto* text = std::get_if<TypeRequest>(&e.what)) {
+      for (unsigned codepoint : text->codepoints) input_.push(CharEvent{codepoint});
       continue;
     }
     Status done = std::visit(
@@ -250,8 +251,8 @@ void Shell::drawMessages() {
 }
 
 Status Shell::drawFrame() {
-  imgui_->beginFrame(replaying() ? &replayedUi_ : nullptr);
-  replayedUi_.wheel = glm::dvec2(0.0);
+  input_.takeFrame();  // ImGui's share of the input queued: at most one transition of a key
+  imgui_->beginFrame(input_.state(), !replaying());
   active_->drawUi(*this);
   drawMessages();
   imgui_->endFrame();
@@ -293,7 +294,7 @@ Result<ShellReport> Shell::run(std::string_view firstMode) {
       PW_TRY(playEventsDue(captures));
       PW_TRY(step());
       for (const std::filesystem::path& path : captures) PW_TRY(capture(path));
-      if (frame_ > lastReplayFrame + 1) quit_ = true;
+      if (frame_ > lastReplayFrame + 1 && input_.empty()) quit_ = true;
     } else {
       for (int steps = clock.stepsFor(); steps > 0; --steps) PW_TRY(step());
     }

@@ -22,6 +22,7 @@
 #include "base/result.h"
 #include "editor/app/app_mode.h"
 #include "editor/app/imgui_layer.h"
+#include "editor/app/input_queue.h"
 #include "editor/app/replay.h"
 #include "editor/app/trace.h"
 #include "editor/app/window.h"
@@ -102,7 +103,7 @@ class Shell {
   ShellOptions options_;
   std::optional<std::vector<ReplayEvent>> replay_;
   size_t nextEvent_ = 0;
-  ReplayedUiInput replayedUi_;
+  InputQueue input_;  // the window's or the replay's input and characters, for ImGui
   std::vector<AppMode*> modes_;
   AppMode* active_ = nullptr;
   std::optional<std::string> pendingMode_;

@@ -34,6 +34,10 @@ Result<std::unique_ptr<Window>> Window::create(const WindowOptions& options, VkI
   glfwSetKeyCallback(handle, [](GLFWwindow* w, int key, int, int action, int mods) {
     if (action != GLFW_REPEAT) of(w).emit(KeyEvent{key, action == GLFW_PRESS, mods});
   });
+  glfwSetCharCallback(handle, [](GLFWwindow* w, unsigned codepoint) {
+    Window& self = of(w);
+    if (self.onChar_) self.onChar_(codepoint);
+  });
   glfwSetMouseButtonCallback(handle, [](GLFWwindow* w, int button, int action, int mods) {
     of(w).emit(MouseButtonEvent{button, action == GLFW_PRESS, mods});
   });

@@ -48,6 +48,8 @@ class Window {
 
   // Where input goes (key repeats are dropped); a handler set again replaces the last.
   void setInputHandler(std::function<void(const InputEvent&)> handler) { onInput_ = std::move(handler); }
+  // Where typed characters go (GLFW's char callback: Unicode code points).
+  void setCharHandler(std::function<void(unsigned)> handler) { onChar_ = std::move(handler); }
   // Called when the framebuffer's size changes (a resize, minimising).
   void setFramebufferSizeHandler(std::function<void(glm::ivec2)> handler) { onFramebufferSize_ = std::move(handler); }
 
@@ -69,6 +71,7 @@ class Window {
   VkInstance instance_ = VK_NULL_HANDLE;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   std::function<void(const InputEvent&)> onInput_;
+  std::function<void(unsigned)> onChar_;
   std::function<void(glm::ivec2)> onFramebufferSize_;
 };
 

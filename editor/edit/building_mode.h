@@ -20,6 +20,7 @@
 #include "editor/edit/building.h"
 #include "editor/edit/building_preview.h"
 #include "editor/edit/canvas.h"
+#include "editor/edit/number_field.h"
 #include "editor/edit/plan.h"
 
 namespace pw::edit {
@@ -132,7 +133,6 @@ class BuildingMode : public app::AppMode {
   void drawPlacement(app::Shell& shell);
   void drawAddShot(app::Shell& shell);
   void drawPlan();
-  bool numberField(const char* label, double value, double* edited, const char* format);
 
   EditMode& editor_;
   ModelWalk& walk_;
@@ -163,8 +163,7 @@ class BuildingMode : public app::AppMode {
   std::string addPath_;  // the panel's "add a shot or photo" field
   std::optional<Question> question_;
   std::vector<std::pair<std::string, WindowRect>> questionButtons_;  // as last drawn, for the trace
-  unsigned activeField_ = 0;
-  double activeFieldValue_ = 0;
+  NumberFields fields_;  // the placement's number fields (number_field.h)
 };
 
 }  // namespace pw::edit

@@ -119,25 +119,7 @@ void BuildingMode::drawCorridorList(app::Shell& shell) {
   ImGui::EndDisabled();
 }
 
-bool BuildingMode::numberField(const char* label, double value, double* edited, const char* format) {
-  const ImGuiID id = ImGui::GetID(label);
-  double v = activeField_ == id ? activeFieldValue_ : value;
-  ImGui::SetNextItemWidth(120.0f);
-  ImGui::InputDouble(label, &v, 0.0, 0.0, format);
-  if (ImGui::IsItemActive()) {
-    activeField_ = id;
-    activeFieldValue_ = v;
-  }
-  if (ImGui::IsItemDeactivatedAfterEdit()) {
-    if (activeField_ == id) activeField_ = 0;
-    *edited = v;
-    return std::isfinite(v);
-  }
-  if (ImGui::IsItemDeactivated() && activeField_ == id) activeField_ = 0;
-  return false;
-}
-
-void BuildingMode::drawPlacement(app::Shell&) {
+void BuildingMode::drawPlacement(app::Shell& shell) {
   const int i = selectedIndex();
   if (i < 0 || size_t(i) >= world_.size()) return;
   if (!ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -181,31 +163,35 @@ void BuildingMode::drawPlacement(app::Shell&) {
       applyLayout(after, "wall of " + entry.name);
       return;
     }
-    if (numberField("offset m", entry.attach->offsetM, &v, "%.3f")) {
+    if (fields_.field(shell, "offset m", entry.attach->offsetM, &v, "%.3f")) {
       Layout after = layout;
       after.corridors[i].attach->offsetM = v;
       applyLayout(after, "offset of " + entry.name);
       return;
     }
+    fields_.drawRefusal("offset m");
     ImGui::TextDisabled(entry.attach->side == Side::kFar ? "(along its far wall, from the centre)"
                                                           : "(from its near end to this one's centre line)");
   } else {
-    if (numberField("x m", entry.position.x, &v, "%.3f")) {
+    if (fields_.field(shell, "x m", entry.position.x, &v, "%.3f")) {
       Layout after = layout;
       after.corridors[i].position.x = v;
       applyLayout(after, "x of " + entry.name);
       return;
     }
-    if (numberField("z m", entry.position.z, &v, "%.3f")) {
+    fields_.drawRefusal("x m");
+    if (fields_.field(shell, "z m", entry.position.z, &v, "%.3f")) {
       Layout after = layout;
       after.corridors[i].position.z = v;
       applyLayout(after, "z of " + entry.name);
       return;
     }
-    if (numberField("rotation deg", entry.rotationDeg, &v, "%.2f")) {
+    fields_.drawRefusal("z m");
+    if (fields_.field(shell, "rotation deg", entry.rotationDeg, &v, "%.2f")) {
       applyLayout(placeCorridor(layout, i, {{entry.position.x, entry.position.z}, v}), "rotation of " + entry.name);
       return;
     }
+    fields_.drawRefusal("rotation deg");
   }
 }
 

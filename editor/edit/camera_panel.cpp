@@ -80,10 +80,13 @@ void EditMode::drawCamera(app::Shell& shell) {
   const Shot shot = doc_->shot();
   Shot after = shot;
   std::string label;
-  const auto positive = [&](double v, const char* what) {
-    if (std::isfinite(v) && v > 0) return true;
-    shell.showMessage(std::string("warning: ") + what + " must be a positive number; kept as it was");
-    return false;
+  // A number field of kFieldRanges (number_field.h): its range checked, its refusal shown under it.
+  double v = 0;
+  const auto number = [&](const char* name, double committed, const char* format, double photoSide = 1) {
+    const bool edited = fields_.field(shell, name, committed, &v, format, photoSide);
+    rememberWidget(name);
+    fields_.drawRefusal(name);
+    return edited;
   };
 
   // The photo's EXIF, as read (the orientation is applied to the photo shown).
@@ -143,14 +146,12 @@ void EditMode::drawCamera(app::Shell& shell) {
     }
     label = "focal length unit";
   }
-  double v = 0;
   if (shot.focalMm) {
-    if (numberField("focal mm", shot.focalMm->focalMm, &v, "%.2f") && positive(v, "the focal length")) {
+    if (number("focal mm", shot.focalMm->focalMm, "%.2f")) {
       after.focalMm->focalMm = v;
       label = "focal length";
     }
-    rememberWidget("focal mm");
-    if (numberField("sensor width mm", shot.focalMm->sensorWidthMm, &v, "%.2f") && positive(v, "the sensor width")) {
+    if (number("sensor width mm", shot.focalMm->sensorWidthMm, "%.2f")) {
       after.focalMm->sensorWidthMm = v;
       label = "sensor width";
     }
@@ -167,11 +168,10 @@ void EditMode::drawCamera(app::Shell& shell) {
     if (after.focalMm) after.focalPx = after.focalMm->pixels(shot.imageWidth);
     ImGui::TextDisabled("= %.1f px (the sensor's side across the photo)", shot.focalPx);
   } else {
-    if (numberField("focal px", shot.focalPx, &v, "%.1f") && positive(v, "the focal length")) {
+    if (number("focal px", shot.focalPx, "%.1f")) {
       after.focalPx = v;
       label = "focal length";
     }
-    rememberWidget("focal px");
   }
   if (shot.imageWidth > 0 && shot.imageHeight > 0) {
     ImGui::TextDisabled("35 mm equivalent %.1f mm (by the diagonal)",
@@ -181,11 +181,11 @@ void EditMode::drawCamera(app::Shell& shell) {
 
   // The principal point: the centre unless moved (its handle on the canvas, or here).
   const glm::dvec2 pp = shot.principalPoint();
-  if (numberField("principal u px", pp.x, &v, "%.1f") && std::isfinite(v)) {
+  if (number("principal u px", pp.x, "%.1f", shot.imageWidth)) {
     after.principalPointPx = glm::dvec2(v, pp.y);
     label = "principal point";
   }
-  if (numberField("principal v px", pp.y, &v, "%.1f") && std::isfinite(v)) {
+  if (number("principal v px", pp.y, "%.1f", shot.imageHeight)) {
     after.principalPointPx = glm::dvec2(pp.x, v);
     label = "principal point";
   }
@@ -223,8 +223,7 @@ void EditMode::drawCamera(app::Shell& shell) {
     }
   }
   rememberWidget("camera height");
-  if (shot.cameraHeightM &&
-      numberField("camera height m", *shot.cameraHeightM, &v, "%.3f") && positive(v, "the camera height")) {
+  if (shot.cameraHeightM && number("camera height m", *shot.cameraHeightM, "%.3f")) {
     after.cameraHeightM = v;
     label = "camera height";
   }
@@ -268,11 +267,10 @@ void EditMode::drawCamera(app::Shell& shell) {
       referencePickFrom_ = -1;
     }
     rememberWidget("pick");
-    if (numberField("reference m", r.lengthM, &v, "%.3f") && positive(v, "the reference length")) {
+    if (number("reference m", r.lengthM, "%.3f")) {
       after.reference->lengthM = v;
       label = "reference length";
     }
-    rememberWidget("reference m");
     if (pickingReference_) {
       wrapped(kWarningColour, referencePickFrom_ < 0 ? "click the reference's first corner on the photo (Esc: stop)"
                                                      : std::string("from ") + metrology::cornerName(referencePickFrom_) +
@@ -382,6 +380,7 @@ void EditMode::addCameraTrace(app::TraceRow& row) const {
     widgets[name] = ordered_json::array({rect.min.x, rect.min.y, rect.size().x, rect.size().y});
   }
   camera["widgets"] = widgets;
+  camera["refused"] = fields_.refused() ? ordered_json(*fields_.refused()) : ordered_json(nullptr);
   row.add("camera", camera);
   ordered_json warnings = ordered_json::array();
   for (const HandleWarning& w : live_.handleWarnings) {

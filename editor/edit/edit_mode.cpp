@@ -45,11 +45,6 @@ std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
              if (path.is_relative()) path = scriptDir / path;
              return std::any(SaveCopyEvent{path});
            }},
-          {"type", [](std::istream& words) -> Result<std::any> {
-             std::string text;
-             if (!(words >> text)) return makeError("expected 'type TEXT'");
-             return std::any(TypeTextEvent{text});
-           }},
           {"preview-wait", [](std::istream&) -> Result<std::any> { return std::any(PreviewWaitEvent{}); }}};
   for (app::ReplayVerb& verb : filesReplayVerbs(scriptDir)) verbs.push_back(std::move(verb));
   return verbs;
@@ -361,10 +356,6 @@ void EditMode::walk(app::Shell& shell) {
 
 Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
   if (onFilesReplayEvent(shell, event)) return {};
-  if (const auto* typed = std::any_cast<TypeTextEvent>(&event.value)) {
-    if (ImGui::GetCurrentContext()) ImGui::GetIO().AddInputCharactersUTF8(typed->text.c_str());
-    return {};
-  }
   if (std::any_cast<PreviewWaitEvent>(&event.value)) {
     if (!doc_) return makeError("preview-wait: no file is open");
     remeasure();

@@ -20,6 +20,7 @@
 #include "editor/edit/document.h"
 #include "editor/edit/edit_files.h"
 #include "editor/edit/live_measurement.h"
+#include "editor/edit/number_field.h"
 #include "editor/edit/overlay.h"
 #include "editor/edit/preview.h"
 
@@ -38,12 +39,6 @@ struct EditModeOptions {
 // (relative to the script), leaving the document's path and state as they are.
 struct SaveCopyEvent {
   std::filesystem::path path;
-};
-
-// `type TEXT`: the replay event that types TEXT (no spaces) into the panel's field that
-// has the keyboard, as keys typed would (camera_panel.cpp).
-struct TypeTextEvent {
-  std::string text;
 };
 
 // `preview-wait`: the replay event that waits until the 3D preview shows the full
@@ -164,9 +159,6 @@ class EditMode : public app::AppMode {
   void addCameraTrace(app::TraceRow& row) const;      // the trace's "camera" and "handle_warnings"
   void rememberWidget(const char* name);              // the last item's rectangle, for the trace
   void drawCorners();
-  // A number field whose edit becomes one undo step when it loses focus; true then,
-  // with the value typed in `*edited`.
-  bool numberField(const char* label, double value, double* edited, const char* format);
   void drawCanvasOverlay();
   void drawEmptyHint(app::Shell& shell);
 
@@ -210,9 +202,8 @@ class EditMode : public app::AppMode {
   std::function<void(app::Shell&, const std::filesystem::path&)> layoutOpener_;
   std::function<bool(app::Shell&)> closeAsker_;
 
-  // The panel's field being typed into, and its text's value so far.
-  unsigned activeField_ = 0;
-  double activeFieldValue_ = 0;
+  // The Camera panel's number fields (number_field.h): the one being typed into, the last refusal.
+  NumberFields fields_;
 };
 
 }  // namespace pw::edit

@@ -179,24 +179,6 @@ void EditMode::drawMeasurement() {
   for (const std::string& warning : live_.warnings) wrapped(kWarningColour, "warning: " + warning);
 }
 
-bool EditMode::numberField(const char* label, double value, double* edited, const char* format) {
-  const ImGuiID id = ImGui::GetID(label);
-  double v = activeField_ == id ? activeFieldValue_ : value;
-  ImGui::SetNextItemWidth(120.0f);
-  ImGui::InputDouble(label, &v, 0.0, 0.0, format);
-  if (ImGui::IsItemActive()) {
-    activeField_ = id;
-    activeFieldValue_ = v;
-  }
-  if (ImGui::IsItemDeactivatedAfterEdit()) {
-    if (activeField_ == id) activeField_ = 0;
-    *edited = v;
-    return true;
-  }
-  if (ImGui::IsItemDeactivated() && activeField_ == id) activeField_ = 0;
-  return false;
-}
-
 void EditMode::drawCorners() {
   if (!ImGui::CollapsingHeader("Corners", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Shot& shot = doc_->shot();

@@ -60,6 +60,19 @@ TEST(ReplayGrammar, ParsesTheShellsEventsForEveryMode) {
   EXPECT_FALSE(inputOf(e[9].what).has_value());
 }
 
+TEST(ReplayGrammar, TypeGivesOneCharacterPerCodePoint) {
+  auto events = parseReplay("4 type 1.5\n5 type h\xc3\xb6he\n", "s.replay", ".");
+  ASSERT_TRUE(events.ok()) << events.message();
+  ASSERT_EQ(events->size(), 2u);
+  EXPECT_EQ(std::get<TypeRequest>((*events)[0].what).codepoints, (std::vector<unsigned>{'1', '.', '5'}));
+  EXPECT_EQ(std::get<TypeRequest>((*events)[1].what).codepoints, (std::vector<unsigned>{'h', 0xf6, 'h', 'e'}));
+  EXPECT_FALSE(inputOf((*events)[0].what).has_value());  // characters are ImGui's, not a mode's
+  auto cut = parseReplay("4 type h\xc3\n", "s", ".");
+  ASSERT_FALSE(cut.ok());
+  EXPECT_EQ(cut.message(), "s:1: 'type': the text is not UTF-8");
+  EXPECT_FALSE(parseReplay("4 type\n", "s", ".").ok());
+}
+
 TEST(ReplayGrammar, ModesAddTheirOwnEvents) {
   auto events = parseReplay("3 jump 0.5\n1 key SPACE down\n", "s.replay", ".", kJumpVerb);
   ASSERT_TRUE(events.ok()) << events.message();
@@ -72,7 +85,7 @@ TEST(ReplayGrammar, ModesAddTheirOwnEvents) {
   auto unknown = parseReplay("3 jump 0.5\n", "s.replay", ".");
   ASSERT_FALSE(unknown.ok());
   EXPECT_EQ(unknown.message(),
-            "s.replay:1: unknown event 'jump' (key, mouse, mousemove, wheel, drop, resize, capture, mode, quit, close)");
+            "s.replay:1: unknown event 'jump' (key, mouse, mousemove, wheel, type, drop, resize, capture, mode, quit, close)");
   // The mode's parser says what it expected, at the line.
   auto bad = parseReplay("\n# a comment\n3 jump -1\n", "s.replay", ".", kJumpVerb);
   ASSERT_FALSE(bad.ok());
@@ -92,7 +105,7 @@ TEST(ReplayGrammar, ErrorsSayWhatWasExpected) {
       {"1 resize 10 20000", "expected 'resize WIDTH HEIGHT' in pixels (1..16384)"},
       {"1 key w down", "unknown key 'w' (use GLFW names: W, UP, LEFT_SHIFT, PAGE_UP, F12)"},
       {"-1 quit", "expected a frame number (0, 1, 2, ...) first, not '-1'"},
-      {"1", "expected an event after the frame (key, mouse, mousemove, wheel, drop, resize, capture, mode, quit, close)"},
+      {"1", "expected an event after the frame (key, mouse, mousemove, wheel, type, drop, resize, capture, mode, quit, close)"},
   };
   for (const auto& [line, expected] : cases) {
     auto parsed = parseReplay(line, "s", ".");
