@@ -366,7 +366,7 @@ def furnish(rng, s):
         if span:
             sill = rng.uniform(0.8, 1.2)
             openings.append(dict(kind="window", side=side, z=span, y=(sill, min(h - 0.2, sill + rng.uniform(1.0, 1.8))),
-                                 sun=rng.random() < 0.5))
+                                 sun=rng.uniform(0.5, 1.1) if rng.random() < 0.5 else 0.0))
 
     def add(kind, prims, colour_, size, place, keypoints, on, **extra):
         objects.append(dict(kind=kind, prims=prims, colour=colour_, size_m=[round(x, 4) for x in size],
@@ -707,8 +707,8 @@ def scene_pov(s):
             out.append("box { %s, %s %s no_shadow }\n" % (v3(xw + side * 0.6, y0 - 3, z0 + 6), v3(xw + side * 0.7, y1 + 8, z1 - 6), sky))
             if o["sun"]:
                 zc = 0.5 * (z0 + z1)
-                out.append("light_source { %s color rgb <1.4,1.3,1.1> spotlight point_at %s radius 12 falloff 16 }\n"
-                           % (v3(side * (w2 + 6), y1 + 4, zc + 2), v3(0, 0, zc)))
+                out.append("light_source { %s color rgb <%.3f,%.3f,%.3f> spotlight point_at %s radius 12 falloff 16 }\n"
+                           % (v3(side * (w2 + 6), y1 + 4, zc + 2), o["sun"], 0.93 * o["sun"], 0.8 * o["sun"], v3(0, 0, zc)))
     # Skirting boards along the side walls and the far wall (trim).
     if s["skirting"]:
         sh, sc = s["skirting"]
