@@ -11,7 +11,7 @@ pixel is the one ray through its centre (no anti-aliasing), and checks:
     shows the surface of its own side, never the surface of the other side (an object,
     an opening or trim may stand there instead). A line off by d px would put the other
     side's surface in the pixels up to d px from it: the largest distance at which one
-    appears is printed; it must be under 0.5 px (and there must be hundreds of pixels
+    appears is printed; it must be under 0.1 px (and there must be hundreds of pixels
     checked per scene);
   - hidden flags: a far corner the answers call hidden (ray cast against the objects)
     has object pixels about it in the mask, and one they call visible has not only
@@ -153,7 +153,7 @@ def check_seed(seed, outdir, size_scale):
         checked, wrong, worst = check_edge(cam, mask, a, b, own, other, off)
         total_checked += checked
         worst_all = max(worst_all, worst)
-        if worst >= 0.5:
+        if worst >= 0.1:  # the answers put it at 0.000 px; a line moved 0.3 px reads 0.29
             failures.append("%s: the other side's surface %.2f px from the line (%d pixels)" % (name, worst, wrong))
     if total_checked < 300:
         failures.append("only %d edge pixels checked" % total_checked)
