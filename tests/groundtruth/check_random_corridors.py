@@ -16,6 +16,8 @@ pixel is the one ray through its centre (no anti-aliasing), and checks:
   - hidden flags: a far corner the answers call hidden (ray cast against the objects)
     has object pixels about it in the mask, and one they call visible has not only
     object pixels about it;
+  - objects: every key point in the photo (door and picture corners, a person's head top
+    and feet, a cabinet's corners...) has its object, or an object before it, within 3 px;
   - boundaries: the share of each boundary shown (ray cast, openings) is within 0.1 of the
     share the mask shows (both surfaces beside it, 1.5 px to each side), for each
     boundary 50 px or more long in the photo.
@@ -166,6 +168,16 @@ def check_seed(seed, outdir, size_scale):
             failures.append("%s called hidden, no object about it in the mask" % c)
         if not ans["far_corners_hidden"][c] and objs == 4:
             failures.append("%s called visible, only object pixels about it in the mask" % c)
+    # Objects' key points: each one in the photo has its object (or one before it) within 3 px in the mask.
+    kp_checked = 0
+    for ob in ans["objects"]:
+        for name, uv in ob["keypoints_px"].items():
+            if uv is None or not rc.in_photo(uv, ans["image_size"], 3.0):
+                continue
+            kp_checked += 1
+            near = {mask.at(int(round(uv[0])) + du, int(round(uv[1])) + dv) for du in range(-3, 4) for dv in range(-3, 4)}
+            if ob["mask_id"] not in near and not any(i is not None and i >= rc.OBJECT_ID0 for i in near):
+                failures.append("%s %d's %s: no object within 3 px in the mask" % (ob["kind"], ob["id"], name))
     # Boundary shares against the mask.
     shares = []
     for name, (corner, side, top, (wall, plane)) in rc.BOUNDARIES.items():
@@ -192,10 +204,10 @@ def check_seed(seed, outdir, size_scale):
         if inside >= 25 and abs(mshare - gshare) > 0.1:  # (a shorter one: a few pixels, a pipe thinner than one)
             failures.append("%s: shown share %.3f by ray casting, %.3f in the mask" % (name, gshare, mshare))
     print("seed %d (%dx%d, far end %s, near end %s, %d objects, hidden %s): %d edge pixels, other side at most %.3f px "
-          "from a line; shares (answer/mask) %s; %.1f s%s"
+          "from a line; %d object key points; shares (answer/mask) %s; %.1f s%s"
           % (seed, mask.w, mask.h, ans["far_end"], ans["near_end"], len(ans["objects"]),
              "".join(c for c in ("P1", "P2", "P3", "P4") if ans["far_corners_hidden"][c]) or "none",
-             total_checked, worst_all, ", ".join(shares), took, "" if not failures else "\n  FAIL: " + "\n  FAIL: ".join(failures)))
+             total_checked, worst_all, kp_checked, ", ".join(shares), took, "" if not failures else "\n  FAIL: " + "\n  FAIL: ".join(failures)))
     return failures
 
 
