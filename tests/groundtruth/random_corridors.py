@@ -38,7 +38,7 @@ the boundaries' shown shares come from ray casting against the objects' primitiv
 with the ceiling) is not an object and hides nothing here (it covers a junction by 2 cm
 at most). check_random_corridors.py checks all of it against the object-id mask.
 """
-import argparse, json, math, os, random, shutil, subprocess, sys, tempfile, time
+import argparse, json, math, os, random, subprocess, sys, tempfile, time
 from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
