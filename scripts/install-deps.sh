@@ -11,6 +11,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libtinygltf-dev zlib1g-dev
   libexif-dev
   xvfb xauth fonts-dejavu-core povray
+  # tests/groundtruth/random_corridors.py's noisy JPEG (sensor noise, then JPEG quality 70)
+  python3-numpy python3-pil
 )
 if [[ "${1:-}" == "--with-extras" || "${CI:-}" == "true" ]]; then
   packages+=(view3dscene)
