@@ -148,12 +148,30 @@ Frame estimateFrame(const std::vector<Line>& lines, double focalPx, glm::dvec2 p
 FocalSearch estimateFrameAndFocal(const std::vector<Line>& lines, glm::dvec2 principalPointPx, cv::Size imageSize) {
   const Prepared p = prepare(lines);
   const double longSide = std::max(imageSize.width, imageSize.height);
-  FocalSearch best;
-  for (double f = 0.5 * longSide; f <= 2.0 * longSide; f *= 1.02) {
-    Frame frame = frameAt(p, f, principalPointPx);
-    if (frame.found && frame.score > best.frame.score) best = {f, frame};
+  FocalSearch result{longSide, frameAt(p, longSide, principalPointPx)};
+  for (int iteration = 0; iteration < 8 && result.frame.found; ++iteration) {
+    // The two most nearly finite directions (largest smaller |z|): their points
+    // v = c + f (x, y) / z give f'^2 = -(v_i - c) . (v_j - c).
+    const auto& d = result.frame.directions;
+    double bestFiniteness = 0, f2 = 0;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i + 1; j < 3; ++j) {
+        const double finiteness = std::min(std::abs(d[i].z), std::abs(d[j].z));
+        if (finiteness <= bestFiniteness) continue;
+        bestFiniteness = finiteness;
+        f2 = -result.focalPx * result.focalPx * (d[i].x * d[j].x + d[i].y * d[j].y) / (d[i].z * d[j].z);
+      }
+    }
+    // Both points within 20 image diagonals, a lens's focal length: else it stays.
+    const double farthest = result.focalPx * std::sqrt(1.0 / (bestFiniteness * bestFiniteness) - 1.0);
+    if (!(f2 > 0) || farthest > 20.0 * std::hypot(imageSize.width, imageSize.height)) break;
+    const double f = std::sqrt(f2);
+    if (!(f > 0.3 * longSide && f < 5.0 * longSide)) break;
+    const bool settled = std::abs(f - result.focalPx) <= 0.005 * f;
+    result = {f, frameAt(p, f, principalPointPx)};
+    if (settled) break;
   }
-  return best;
+  return result;
 }
 
 }  // namespace pw::bench::lu

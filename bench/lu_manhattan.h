@@ -48,9 +48,13 @@ struct Frame {
 // The frame with the camera given.
 Frame estimateFrame(const std::vector<Line>& lines, double focalPx, glm::dvec2 principalPointPx);
 
-// With the focal length withheld: the frame at every focal length of a geometric grid
-// from 0.5 to 2 times the long side (2% steps), the one whose winner scores highest,
-// and that focal length.
+// With the focal length withheld: the frame found with f = the long side (the authors'
+// suggestion for an unknown camera), then f from its two most nearly finite (orthogonal)
+// vanishing points, f^2 = -(v1 - c).(v2 - c) (Hartley & Zisserman 8.8.1), the frame
+// found again with it, until f settles (0.5%); f stays where no two points fix it.
+// (A grid of focal lengths picking the best-scoring frame was tried first: the polar
+// grid's score does not pin f down: its winners sat at either end of the grid, 49%
+// off in the median on York Urban.)
 struct FocalSearch {
   double focalPx = 0;
   Frame frame;

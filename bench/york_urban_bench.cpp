@@ -239,7 +239,7 @@ int main(int argc, char** argv) {
     if (search.frame.found) {
       row.lu.focalPx = search.focalPx;
       row.lu.focalErrPct = 100.0 * (search.focalPx / f - 1.0);
-      row.lu.focalSource = "focal_grid";
+      row.lu.focalSource = "two_points";
     }
 
     const auto num = [](double x, const char* fmt) {
@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
   printTotals("All photos (a photo without a frame counts as 180 degrees; focal: 100% off)", rows, false);
   printTotals("Indoor photos (corridor, corridor_partial, indoor_other)", rows, true);
   std::printf("\nfocal withheld: photowalk as detect runs it (second finite vanishing point, else the 28 mm default); "
-              "Lu: the focal length on a 2%% grid (0.5-2 x long side) whose best frame scores highest\n");
+              "Lu: from its two most finite vanishing points, iterated from f = long side\n");
 
   if (!jsonOut.empty()) {
     std::ofstream o(jsonOut);
