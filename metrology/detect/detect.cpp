@@ -318,7 +318,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // Vanishing points, and the focal length when it is not given.
   d.focalSource = options.focalPx ? FocalSource::kGiven : FocalSource::kDefault;
   d.focalPx = givenOrDefaultFocal(options, size);
-  auto frame = frameWithFocal(segments, d.focalPx, pp, size, false);
+  auto frame = frameWithFocal(segments, d.focalPx, pp, size, options.focalPx.has_value());
   if (!frame) return notFound(d, frame.message());
   if (!options.focalPx) {
     if (auto second = focalFromSecondPoint(segments, *frame, pp, size)) {

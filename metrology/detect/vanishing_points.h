@@ -37,9 +37,11 @@ struct ManhattanFrame {
 
 // How the three directions are refined once the frame is found.
 enum class FrameRefinement {
-  // The focal length is known: one rotation fitted to all three families of segments
-  // at once, so the directions stay orthogonal and a family with few segments is fixed
-  // by the other two.
+  // The focal length is known: one rotation is also fitted to all three families of
+  // segments at once (orthogonal directions), and a direction whose own fit strays
+  // from it by more than a quarter of a degree (a weak or contaminated family) is
+  // replaced by the rotation's, fixed by the other two; the others keep their own fit,
+  // which a principal point slightly off does not bias.
   kJointOrthogonal,
   // The focal length is a guess: each direction fitted alone (and the corridor's point
   // refined in the image, refineFinitePoint), so that the guess biases the labels only,
@@ -54,7 +56,9 @@ enum class FrameRefinement {
 // on a 0.25° histogram of where each segment's plane crosses that circle), the third
 // their cross product; each scored by all segments, a segment counting once for the
 // direction its plane passes nearest, within 1.5°. The best is refined as `refinement`
-// says. The corridor direction is the one most nearly along the optical axis.
+// says (each direction by least squares over its segments within 1.5°, the rotation
+// over those within 1°; the corridor's point then in the image, refineFinitePoint,
+// unless the rotation replaced it). The corridor direction is the one most nearly along the optical axis.
 //
 // Confidence: corridor = (share of 8 angular sectors around the point that hold
 // inlier segments) x (1 - exp(-inlier length / image diagonal)); horizontal and
