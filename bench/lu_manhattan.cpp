@@ -148,23 +148,55 @@ Frame estimateFrame(const std::vector<Line>& lines, double focalPx, glm::dvec2 p
 FocalSearch estimateFrameAndFocal(const std::vector<Line>& lines, glm::dvec2 principalPointPx, cv::Size imageSize) {
   const Prepared p = prepare(lines);
   const double longSide = std::max(imageSize.width, imageSize.height);
+  const double diagonal = std::hypot(imageSize.width, imageSize.height);
   FocalSearch result{longSide, frameAt(p, longSide, principalPointPx)};
   for (int iteration = 0; iteration < 8 && result.frame.found; ++iteration) {
-    // The two most nearly finite directions (largest smaller |z|): their points
-    // v = c + f (x, y) / z give f'^2 = -(v_i - c) . (v_j - c).
-    const auto& d = result.frame.directions;
-    double bestFiniteness = 0, f2 = 0;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = i + 1; j < 3; ++j) {
-        const double finiteness = std::min(std::abs(d[i].z), std::abs(d[j].z));
-        if (finiteness <= bestFiniteness) continue;
-        bestFiniteness = finiteness;
-        f2 = -result.focalPx * result.focalPx * (d[i].x * d[j].x + d[i].y * d[j].y) / (d[i].z * d[j].z);
+    // The frame's points are orthogonal for the f they were found with, so f is read
+    // off the points fitted to each one's lines alone: the lines within 6 degrees of
+    // pointing at it (the authors' clustering), their least-squares intersection.
+    const glm::dmat3 k(result.focalPx, 0, 0, 0, result.focalPx, 0, principalPointPx.x, principalPointPx.y, 1);
+    std::array<glm::dvec3, 3> points;
+    std::array<cv::Matx33d, 3> normal;
+    normal.fill(cv::Matx33d::zeros());
+    std::array<int, 3> members{};
+    for (int j = 0; j < 3; ++j) points[j] = k * result.frame.directions[j];
+    for (const Line& l : lines) {
+      const glm::dvec2 m = 0.5 * (l.a + l.b), along = (l.b - l.a) / l.lengthPx;
+      int best = -1;
+      double bestAngle = 6.0 * kDeg;
+      for (int j = 0; j < 3; ++j) {
+        glm::dvec2 to(points[j].x - m.x * points[j].z, points[j].y - m.y * points[j].z);
+        if (glm::length(to) == 0) continue;
+        to = glm::normalize(to);
+        const double angle = std::asin(std::min(1.0, std::abs(along.x * to.y - along.y * to.x)));
+        if (angle < bestAngle) bestAngle = angle, best = j;
       }
+      if (best < 0) continue;
+      glm::dvec3 line = glm::cross(glm::dvec3(l.a, 1.0), glm::dvec3(l.b, 1.0));
+      line /= std::hypot(line.x, line.y);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) normal[best](r, c) += l.lengthPx * line[r] * line[c];
+      ++members[best];
     }
-    // Both points within 20 image diagonals, a lens's focal length: else it stays.
-    const double farthest = result.focalPx * std::sqrt(1.0 / (bestFiniteness * bestFiniteness) - 1.0);
-    if (!(f2 > 0) || farthest > 20.0 * std::hypot(imageSize.width, imageSize.height)) break;
+    // Finite points (within 20 image diagonals) fitted to two lines or more.
+    std::vector<glm::dvec2> finite;
+    for (int j = 0; j < 3; ++j) {
+      if (members[j] < 2) continue;
+      cv::Matx31d values;
+      cv::Matx33d vectors;
+      cv::eigen(normal[j], values, vectors);
+      const glm::dvec3 v(vectors(2, 0), vectors(2, 1), vectors(2, 2));
+      if (std::abs(v.z) < 1e-12) continue;
+      const glm::dvec2 px(v.x / v.z, v.y / v.z);
+      if (glm::length(px - principalPointPx) <= 20.0 * diagonal) finite.push_back(px);
+    }
+    // f^2 = -(v1 - c).(v2 - c) from the two nearest the principal point.
+    std::sort(finite.begin(), finite.end(), [&](glm::dvec2 a, glm::dvec2 b) {
+      return glm::length(a - principalPointPx) < glm::length(b - principalPointPx);
+    });
+    if (finite.size() < 2) break;
+    const double f2 = -glm::dot(finite[0] - principalPointPx, finite[1] - principalPointPx);
+    if (!(f2 > 0)) break;
     const double f = std::sqrt(f2);
     if (!(f > 0.3 * longSide && f < 5.0 * longSide)) break;
     const bool settled = std::abs(f - result.focalPx) <= 0.005 * f;

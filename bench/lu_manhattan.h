@@ -49,12 +49,13 @@ struct Frame {
 Frame estimateFrame(const std::vector<Line>& lines, double focalPx, glm::dvec2 principalPointPx);
 
 // With the focal length withheld: the frame found with f = the long side (the authors'
-// suggestion for an unknown camera), then f from its two most nearly finite (orthogonal)
-// vanishing points, f^2 = -(v1 - c).(v2 - c) (Hartley & Zisserman 8.8.1), the frame
-// found again with it, until f settles (0.5%); f stays where no two points fix it.
-// (A grid of focal lengths picking the best-scoring frame was tried first: the polar
-// grid's score does not pin f down: its winners sat at either end of the grid, 49%
-// off in the median on York Urban.)
+// suggestion for an unknown camera); each point then fitted in the image to its own
+// lines (those within 6 degrees of pointing at it, the authors' clustering: least-squares
+// intersection), f from the two nearest the principal point, f^2 = -(v1 - c).(v2 - c)
+// (Hartley & Zisserman 8.8.1), and the frame found again with it, until f settles
+// (0.5%); f stays where no two finite points fix it. (A grid of focal lengths picking
+// the best-scoring frame was tried first: the polar grid's score does not pin f down,
+// its winners sat at either end of the grid, 49% off in the median on York Urban.)
 struct FocalSearch {
   double focalPx = 0;
   Frame frame;

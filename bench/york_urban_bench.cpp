@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
   printTotals("All photos (a photo without a frame counts as 180 degrees; focal: 100% off)", rows, false);
   printTotals("Indoor photos (corridor, corridor_partial, indoor_other)", rows, true);
   std::printf("\nfocal withheld: photowalk as detect runs it (second finite vanishing point, else the 28 mm default); "
-              "Lu: from its two most finite vanishing points, iterated from f = long side\n");
+              "Lu: from two finite points fitted to its line clusters, iterated from f = long side\n");
 
   if (!jsonOut.empty()) {
     std::ofstream o(jsonOut);

@@ -22,7 +22,7 @@ constexpr double kJointFitAngleDeg = 1.0;
 // frame's (the detect tests' POV-Ray corridors need 0.25: their independent fits are
 // the more precise; York Urban: 46 of 51 within 2 degrees at 0 to 0.5, 44 at 1).
 constexpr double kAgreementDeg = 0.25;
-constexpr int kFirstDirectionDraws = 500;   // pairs of segments giving the first direction
+constexpr int kFirstDirectionDraws = 250;   // pairs of segments giving the first direction
 constexpr size_t kDrawPoolSize = 400;       // the longest segments give the first directions
 constexpr int kRefinementRounds = 3;
 constexpr size_t kMinSegments = 8;
