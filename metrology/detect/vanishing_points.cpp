@@ -23,7 +23,7 @@ constexpr double kJointFitAngleDeg = 1.0;
 // the more precise; York Urban: 46 of 51 within 2 degrees at 0 to 0.5, 44 at 1).
 constexpr double kAgreementDeg = 0.25;
 constexpr int kFirstDirectionDraws = 250;   // pairs of segments giving the first direction
-constexpr size_t kDrawPoolSize = 400;       // the longest segments give the first directions
+constexpr size_t kDrawPoolSize = 400;       // the longest segments give and score the hypotheses
 constexpr int kRefinementRounds = 3;
 constexpr size_t kMinSegments = 8;
 
@@ -244,8 +244,9 @@ Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& se
 
   // Hypotheses: the first direction from two of the longest segments, drawn in
   // proportion to length; the second searched exhaustively around the great circle
-  // orthogonal to it (bestSecondDirection), the third their cross product. Every
-  // segment has its say in each hypothesis's score.
+  // orthogonal to it (bestSecondDirection), the third their cross product; scored by
+  // the same longest segments (a bounded cost on a large photo: the York Urban photos
+  // score the same with all of them), refined below with all.
   std::vector<int> pool(segments.size());
   std::iota(pool.begin(), pool.end(), 0);
   std::sort(pool.begin(), pool.end(), [&](int a, int b) { return segments[a].lengthPx > segments[b].lengthPx; });
@@ -256,6 +257,8 @@ Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& se
   std::discrete_distribution<int> draw(poolWeights.begin(), poolWeights.end());
 
   const double tol = std::sin(kInlierAngleDeg * kPi / 180.0);
+  std::vector<SphereSegment> scoring;
+  for (int i : pool) scoring.push_back(sphere[i]);
   std::array<glm::dvec3, 3> best{};
   double bestScore = -1;
   for (int it = 0; it < kFirstDirectionDraws; ++it) {
@@ -264,9 +267,9 @@ Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& se
     glm::dvec3 d1 = glm::cross(sphere[a].normal, sphere[b].normal);
     if (glm::length(d1) < 1e-6) continue;
     d1 = glm::normalize(d1);
-    const glm::dvec3 d2 = bestSecondDirection(sphere, d1, tol);
+    const glm::dvec3 d2 = bestSecondDirection(scoring, d1, tol);
     const glm::dvec3 d3 = glm::cross(d1, d2);
-    const double score = frameScore(sphere, d1, d2, d3, tol);
+    const double score = frameScore(scoring, d1, d2, d3, tol);
     if (score > bestScore) bestScore = score, best = {d1, d2, d3};
   }
   if (bestScore <= 0) return makeError("no three orthogonal directions among the straight edges");

@@ -54,8 +54,8 @@ enum class FrameRefinement {
 // from two segments drawn at random, the second searched exhaustively around the great
 // circle orthogonal to it (the 2-line exhaustive search of Lu et al., WACV 2017, here
 // on a 0.25° histogram of where each segment's plane crosses that circle), the third
-// their cross product; each scored by all segments, a segment counting once for the
-// direction its plane passes nearest, within 1.5°. The best is refined as `refinement`
+// their cross product; each scored by the 400 longest segments, a segment counting once
+// for the direction its plane passes nearest, within 1.5°. The best is refined as `refinement`
 // says (each direction by least squares over its segments within 1.5°, the rotation
 // over those within 1°; the corridor's point then in the image, refineFinitePoint,
 // unless the rotation replaced it). The corridor direction is the one most nearly along the optical axis.
