@@ -76,9 +76,12 @@ bool allFinite(const std::array<CornerEstimate, 8>& corners) {
   return true;
 }
 
+// The frame with a known focal length (its directions held orthogonal), or with one
+// that is a guess or being estimated (each direction alone: see FrameRefinement).
 Result<ManhattanFrame> frameWithFocal(const std::vector<LineSegment>& segments, double focalPx, glm::dvec2 pp,
-                                      cv::Size size) {
-  return estimateManhattanFrame(segments, PinholeCamera{focalPx, pp}, size);
+                                      cv::Size size, bool focalKnown) {
+  return estimateManhattanFrame(segments, PinholeCamera{focalPx, pp}, size,
+                                focalKnown ? FrameRefinement::kJointOrthogonal : FrameRefinement::kIndependent);
 }
 
 // The focal length from the corridor's vanishing point and a second finite one
@@ -112,7 +115,7 @@ std::optional<std::pair<double, ManhattanFrame>> focalFromSecondPoint(const std:
       if (offset >= kMinSecondPointOffsetOfLongSide * longSide && offset > bestOffset) f = candidate, bestOffset = offset;
     }
     if (!f || !(*f > 0.3 * longSide && *f < 5.0 * longSide)) return std::nullopt;
-    auto refitted = frameWithFocal(segments, *f, pp, size);
+    auto refitted = frameWithFocal(segments, *f, pp, size, false);
     if (!refitted) return std::nullopt;
     frame = std::move(*refitted);
     if (std::abs(*f - previous) <= kFocalSettledShare * *f) return std::pair{*f, std::move(frame)};
@@ -444,7 +447,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // Vanishing points, and the focal length when it is not given.
   d.focalSource = options.focalPx ? FocalSource::kGiven : FocalSource::kDefault;
   d.focalPx = givenOrDefaultFocal(options, size);
-  auto frame = frameWithFocal(segments, d.focalPx, pp, size);
+  auto frame = frameWithFocal(segments, d.focalPx, pp, size, options.focalPx.has_value());
   if (!frame) return notFound(d, frame.message());
   if (!options.focalPx) {
     if (auto second = focalFromSecondPoint(segments, *frame, pp, size)) {

@@ -35,21 +35,38 @@ struct ManhattanFrame {
   std::vector<int> labels;    // per input segment: 0 corridor, 1 horizontal, 2 vertical, -1 none
 };
 
-// Finds three orthogonal directions by RANSAC over the segments' interpretation
-// planes on the Gaussian sphere (Barnard 1983; the 2-line + 1-line minimal sample of
-// Wildenauer & Hanbury, "Robust camera self-calibration from monocular images of
-// Manhattan worlds", CVPR 2012): two segments give one direction, a third segment
-// gives the second orthogonal to it, the cross product the third. Each direction is
-// then refined by weighted least squares over its inliers, independently, so a wrong
-// focal length biases the classification only, not the vanishing points. The
-// corridor direction is the one most nearly along the optical axis.
+// How the three directions are refined once the frame is found.
+enum class FrameRefinement {
+  // The focal length is known: one rotation is also fitted to all three families of
+  // segments at once (orthogonal directions), and a direction whose own fit strays
+  // from it by more than a quarter of a degree (a weak or contaminated family) is
+  // replaced by the rotation's, fixed by the other two; the others keep their own fit,
+  // which a principal point slightly off does not bias.
+  kJointOrthogonal,
+  // The focal length is a guess: each direction fitted alone (and the corridor's point
+  // refined in the image, refineFinitePoint), so that the guess biases the labels only,
+  // not the vanishing points, and a focal length can be read off two of them.
+  kIndependent,
+};
+
+// Finds three orthogonal directions on the Gaussian sphere (Barnard 1983), each
+// segment a great circle (its interpretation plane). Hypotheses: the first direction
+// from two segments drawn at random, the second searched exhaustively around the great
+// circle orthogonal to it (the 2-line exhaustive search of Lu et al., WACV 2017, here
+// on a 0.25° histogram of where each segment's plane crosses that circle), the third
+// their cross product; each scored by the 400 longest segments, a segment counting once
+// for the direction its plane passes nearest, within 1.5°. The best is refined as `refinement`
+// says (each direction by least squares over its segments within 1.5°, the rotation
+// over those within 1°; the corridor's point then in the image, refineFinitePoint,
+// unless the rotation replaced it). The corridor direction is the one most nearly along the optical axis.
 //
 // Confidence: corridor = (share of 8 angular sectors around the point that hold
 // inlier segments) x (1 - exp(-inlier length / image diagonal)); horizontal and
 // vertical = 1 - exp(-2 inlier length / image diagonal). The error says why no
 // frame was found (too few segments, no finite corridor point).
 Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& segments, const PinholeCamera& camera,
-                                              cv::Size imageSize);
+                                              cv::Size imageSize,
+                                              FrameRefinement refinement = FrameRefinement::kJointOrthogonal);
 
 // Refines a finite vanishing point in the image by Gauss-Newton on the distance of
 // each member segment's end points from the line joining its midpoint to the point
