@@ -111,7 +111,22 @@ class AngularProfile {
   Features spread_{};
 };
 
+// The angle of the sharpest colour step within `range` bins of `coarseBin`: narrow
+// windows are not misled by a texture line beside a boundary (a mortar joint one brick
+// course below a ceiling), which only a gradient would prefer. The bin's start is the step.
+double sharpestStepAngle(const AngularProfile& profile, int coarseBin, int range) {
+  double fineStrength = -1;
+  int fineBin = coarseBin;
+  for (int i = -range; i <= range; ++i) {
+    const int bin = (coarseBin + i + kBins) % kBins;
+    const double s = profile.step(bin, kFineWindowBins, /*colourOnly=*/true);
+    if (s > fineStrength) fineStrength = s, fineBin = bin;
+  }
+  return wrapAngle(angleOf(fineBin) - 0.5 * 2 * kPi / kBins);
+}
+
 }  // namespace
+
 
 const char* boundaryName(int boundary) {
   static const char* const kNames[kBoundaryCount] = {"floor-left", "floor-right", "ceiling-left", "ceiling-right"};
@@ -193,15 +208,7 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     // Place it: the sharpest step near the coarse one. Narrow windows are not
     // misled by a texture line beside the boundary (a mortar joint one brick
     // course below a ceiling), which only a gradient would prefer.
-    const int range = static_cast<int>(kFineRangeDeg / 360.0 * kBins);
-    double fineStrength = -1;
-    int fineBin = coarseBin;
-    for (int i = -range; i <= range; ++i) {
-      const int bin = (coarseBin + i + kBins) % kBins;
-      const double s = profile.step(bin, kFineWindowBins, /*colourOnly=*/true);
-      if (s > fineStrength) fineStrength = s, fineBin = bin;
-    }
-    out.angle[boundary] = wrapAngle(angleOf(fineBin) - 0.5 * 2 * kPi / kBins);  // the bin's start is the step
+    out.angle[boundary] = sharpestStepAngle(profile, coarseBin, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
     out.contrast[boundary] = coarseStrength;
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
   }
@@ -228,15 +235,8 @@ RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vp, cons
     if (coarseStrength < kMinContrast) {
       out.angle[boundary] = wrapAngle(angle[boundary]);  // nothing to go by: as given
     } else {
-      const int range = std::min(reach, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
-      double fineStrength = -1;
-      int fineBin = coarseBin;
-      for (int i = -range; i <= range; ++i) {
-        const int bin = (coarseBin + i + kBins) % kBins;
-        const double s = profile.step(bin, kFineWindowBins, /*colourOnly=*/true);
-        if (s > fineStrength) fineStrength = s, fineBin = bin;
-      }
-      out.angle[boundary] = wrapAngle(angleOf(fineBin) - 0.5 * 2 * kPi / kBins);
+      out.angle[boundary] =
+          sharpestStepAngle(profile, coarseBin, std::min(reach, static_cast<int>(kFineRangeDeg / 360.0 * kBins)));
     }
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
   }
