@@ -25,6 +25,7 @@ namespace {
 
 constexpr double kGrabRadiusPx = 12;   // a press this near a handle takes it
 constexpr double kSlowFactor = 0.1;    // Shift while dragging
+constexpr double kSnapReachScreenPx = 12;  // a dragged corner snaps to a junction this near
 constexpr double kNudgePx = 1.0;       // arrow keys; Shift: a tenth
 constexpr long kNudgeLoupeSteps = 60;  // the loupe stays a second after a nudge
 constexpr double kPreviewToolbarPx = 30;  // the 3D preview's toolbar, over its pane
@@ -102,6 +103,7 @@ void EditMode::showDocument(app::Shell& shell, Document doc) {
   canvas_ = Canvas();  // fits the new photo
   selected_ = -1;
   drag_.reset();
+  snapShown_.reset();
   panFrom_.reset();
   measuredShot_.reset();
   layOut(shell);
@@ -265,7 +267,41 @@ void EditMode::onCursor(const glm::dvec2& p) {
     if (principal) shot.principalPointPx = principalPx;
     drag_->lastCursorPx = p;
     doc_->setLive(shot);
+    updateSnap();
   }
+}
+
+std::optional<EditMode::SnapRequest> EditMode::snapRequest() {
+  if (!drag_ || !doc_ || drag_->corner < 0 || drag_->corner >= kCornerCount || altHeld()) return std::nullopt;
+  const Shot& shot = doc_->shot();
+  SnapRequest r;
+  r.corner = drag_->corner;
+  r.box = shot.cornersPx;
+  r.at = shot.cornersPx[drag_->corner];
+  // Within a dozen screen pixels of where it is dropped, whatever the zoom.
+  r.reachPx = std::clamp(kSnapReachScreenPx / canvas_.scale(), 1.0, 25.0);
+  r.snapper = std::make_shared<const metrology::detect::CornerSnapper>(doc_->photo(), shot.focalPx, shot.principalPoint());
+  return r;
+}
+
+void EditMode::updateSnap() {
+  auto request = snapRequest();
+  if (!request) return;
+  if (!snapWorker_) {
+    snapWorker_ = std::make_unique<LatestWorker<SnapRequest, SnapDone>>(
+        [](SnapRequest& r, const auto& emit, const auto&) {
+          auto snap = r.snapper->snap(r.corner, r.box, r.at, r.reachPx);
+          emit(SnapDone{std::move(r), snap});
+        });
+  }
+  snapWorker_->request(std::move(*request));
+}
+
+std::optional<glm::dvec2> EditMode::currentSnap() const {
+  if (!drag_ || !doc_ || !snapShown_ || !snapShown_->snap || altHeld()) return std::nullopt;
+  const SnapRequest& r = snapShown_->request;
+  if (r.corner != drag_->corner || r.box != doc_->shot().cornersPx) return std::nullopt;  // for an older position
+  return snapShown_->snap->px;
 }
 
 void EditMode::onDrop(app::Shell& shell, const app::DropEvent& e) {
@@ -283,6 +319,21 @@ void EditMode::select(int corner) { selected_ = (corner >= 0 && corner < kCorner
 void EditMode::endDrag(bool keep) {
   if (!drag_ || !doc_) return;
   if (keep) {
+    // Released by its edge junction (Alt: where it is): the worker's answer for this very
+    // position, else worked out now, so a replay's release snaps however fast it ran.
+    if (auto request = snapRequest()) {
+      std::optional<metrology::detect::CornerSnap> snap;
+      if (snapShown_ && snapShown_->request.sameAs(*request)) {
+        snap = snapShown_->snap;
+      } else {
+        snap = request->snapper->snap(request->corner, request->box, request->at, request->reachPx);
+      }
+      if (snap) {
+        Shot snapped = doc_->shot();
+        snapped.cornersPx[drag_->corner] = snap->px;
+        doc_->setLive(snapped);
+      }
+    }
     doc_->commitLive(drag_->before, drag_->corner == kPrincipalPointHandle
                                         ? std::string("move the principal point")
                                         : std::string("move ") + metrology::cornerName(drag_->corner));
@@ -290,6 +341,7 @@ void EditMode::endDrag(bool keep) {
     doc_->setLive(drag_->before);
   }
   drag_.reset();
+  snapShown_.reset();
 }
 
 void EditMode::nudge(const glm::dvec2& delta) {
@@ -384,6 +436,9 @@ void EditMode::remeasure() {
 void EditMode::update(app::Shell& shell, double stepS) {
   layOut(shell);
   remeasure();
+  if (snapWorker_) {
+    for (SnapDone& done : snapWorker_->takeDone()) snapShown_ = std::move(done);
+  }
   if (doc_) preview_.update(shell, doc_->shot(), live_.measurement.has_value(), drag_.has_value());
   updateFiles(shell, stepS);
   ++step_;
@@ -418,6 +473,8 @@ void EditMode::traceRow(app::TraceRow& row) const {
     row.add("corners_px", ordered_json(nullptr));
   }
   row.add("selected", selected_ >= 0 ? ordered_json(metrology::cornerName(selected_)) : ordered_json(nullptr));
+  const std::optional<glm::dvec2> snap = currentSnap();
+  row.add("snap_px", snap ? pair(*snap) : ordered_json(nullptr));
   if (live_.measurement) {
     const metrology::Dimensions& size = live_.measurement->size;
     row.add("measurement", ordered_json{{"width_m", size.widthM}, {"height_m", size.heightM}, {"length_m", size.lengthM}});

@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,7 +23,9 @@
 #include "editor/edit/live_measurement.h"
 #include "editor/edit/number_field.h"
 #include "editor/edit/overlay.h"
+#include "editor/edit/latest_worker.h"
 #include "editor/edit/preview.h"
+#include "metrology/detect/snap.h"
 
 namespace pw::edit {
 
@@ -181,6 +184,26 @@ class EditMode : public app::AppMode {
 
   int selected_ = -1;
   std::optional<Drag> drag_;
+  // Snapping a dragged corner onto its edge junction: the photo's snapper, made at the
+  // first drag of a document; the junction the corner would go to on release (shown
+  // while dragging; Alt keeps the corner where it is).
+  struct SnapRequest {
+    int corner = -1;
+    std::array<glm::dvec2, metrology::kCornerCount> box{};
+    glm::dvec2 at{0.0};
+    double reachPx = 0;
+    std::shared_ptr<const metrology::detect::CornerSnapper> snapper;
+    bool sameAs(const SnapRequest& o) const { return corner == o.corner && box == o.box && at == o.at && reachPx == o.reachPx; }
+  };
+  struct SnapDone {
+    SnapRequest request;
+    std::optional<metrology::detect::CornerSnap> snap;
+  };
+  std::unique_ptr<LatestWorker<SnapRequest, SnapDone>> snapWorker_;
+  std::optional<SnapDone> snapShown_;  // the latest answer, for the ring
+  std::optional<SnapRequest> snapRequest();  // for the corner being dragged, where it is
+  void updateSnap();
+  std::optional<glm::dvec2> currentSnap() const;  // the ring's answer, when it is for where the corner is
   std::optional<glm::dvec2> panFrom_;  // the cursor when a pan began or last moved
   int panButton_ = -1;
   glm::dvec2 cursorPx_{-1.0};

@@ -23,7 +23,8 @@ const char* const kKeys =
     "middle/right drag  pan (or Space + left drag)\n"
     "F, 1               fit the photo; 1:1\n"
     "H                  hide/show the handles and guides\n"
-    "drag a handle      move the corner (Shift: 10x slower)\n"
+    "drag a handle      move the corner (Shift: 10x slower); released by an edge\n"
+    "                   junction (the ring), it snaps there (Alt: stays put)\n"
     "Tab, Shift+Tab     next, previous corner\n"
     "Alt+1..8           select P1..P8\n"
     "arrow keys         nudge 1 px (Shift: 0.1 px)\n"
@@ -218,6 +219,15 @@ void EditMode::drawCanvasOverlay() {
       drawCameraOverlay(list);
       list->PopClipRect();
     }
+  }
+  if (const std::optional<glm::dvec2> snap = currentSnap()) {
+    // Where the corner goes on release: a ring on the edge junction, joined to the handle.
+    const glm::dvec2 at = canvas_.toWindow(*snap), handle = canvas_.toWindow(shot.cornersPx[drag_->corner]);
+    const ImU32 colour = IM_COL32(80, 230, 255, 255);
+    list->AddLine({float(handle.x), float(handle.y)}, {float(at.x), float(at.y)}, colour, 1.0f);
+    list->AddCircle({float(at.x), float(at.y)}, 7.0f, colour, 16, 2.0f);
+    list->AddLine({float(at.x) - 4, float(at.y)}, {float(at.x) + 4, float(at.y)}, colour, 1.0f);
+    list->AddLine({float(at.x), float(at.y) - 4}, {float(at.x), float(at.y) + 4}, colour, 1.0f);
   }
   if (magnifier) drawLoupe(list, *magnifier, shot);
 

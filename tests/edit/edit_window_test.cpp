@@ -152,6 +152,31 @@ TEST_F(Edit, DraggingAHandleMovesItsCornerByTheDragOverTheScaleAtThreeZooms) {
   EXPECT_TRUE(rows.back().dirty);
 }
 
+// A corner released a few pixels from its edge junction snaps onto it (the ring shows
+// where, in the trace's snap_px); released far from any junction it stays where it was
+// dropped; with Alt held it stays put.
+TEST_F(Edit, ACornerReleasedByItsEdgeJunctionSnapsOntoItUnlessAltIsHeld) {
+  const std::string file = shotCopy("snap");
+  const auto first = edit("snap_first", file, "1 quit\n");
+  ASSERT_FALSE(first.empty());
+  const glm::dvec2 exact = first[0].corners[0];  // P1, the ground truth's
+  const glm::dvec2 handle = first[0].toWindow(exact);
+  Script s;
+  s.drag(5, handle, {60, 0});                           // away from the junction: stays
+  s.drag(15, handle + glm::dvec2(60, 0), {-55, 4});     // 5 px right, 4 down of it: snaps
+  s.at(25, "key LEFT_ALT down").drag(26, handle, {5, 4}).at(33, "key LEFT_ALT up");  // Alt held: stays
+  s.at(36, "quit");
+  const auto rows = edit("snap", file, s.str());
+  ASSERT_GE(rows.size(), 36u);
+  const double scale = rows[4].scale;
+  EXPECT_NEAR(rows[12].corners[0].x, exact.x + 60 / scale, 0.01);
+  EXPECT_NEAR(rows[12].corners[0].y, exact.y, 0.01);
+  EXPECT_LT(glm::length(rows[22].corners[0] - exact), 1.0) << rows[22].corners[0].x << "," << rows[22].corners[0].y;
+  const glm::dvec2 held = rows[34].corners[0] - rows[22].corners[0];
+  EXPECT_NEAR(held.x, 5 / scale, 0.01);
+  EXPECT_NEAR(held.y, 4 / scale, 0.01);
+}
+
 TEST_F(Edit, TheWheelKeepsThePointUnderTheCursorInPlace) {
   const std::string file = shotCopy("wheel");
   struct Zoom {
