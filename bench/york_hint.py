@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""`detect --hint` on real photos (issue 22 part 5): each careful box of
+bench/data/york_careful_boxes.json (York Urban training half, ../shared/real-photos)
+with every corner moved 15 px in a random direction, fitted back; prints per trial the
+worst far-wall corner's and the worst near corner's distance from the careful box.
+usage: york_hint.py PHOTOWALK [--trials N] [--dataset DIR]"""
+import argparse, json, math, os, random, statistics, subprocess, sys, tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("photowalk")
+    ap.add_argument("--trials", type=int, default=20)
+    ap.add_argument("--dataset", default=os.path.join(HERE, "..", "..", "shared", "real-photos", "york-urban-train"))
+    a = ap.parse_args()
+    if not os.path.isdir(a.dataset):
+        sys.exit("error: %s: no York Urban dataset there (--dataset DIR)" % a.dataset)
+    cam = json.load(open(os.path.join(a.dataset, "camera.json")))
+    boxes = json.load(open(os.path.join(HERE, "data", "york_careful_boxes.json")))["boxes"]
+    far_all, near_all = [], []
+    with tempfile.TemporaryDirectory() as d:
+        for name, careful in sorted(boxes.items()):
+            rng = random.Random(name)
+            for trial in range(a.trials):
+                rough = {}
+                for k, (u, v) in careful.items():
+                    t = rng.uniform(0, 2 * math.pi)
+                    rough[k] = [u + 15 * math.cos(t), v + 15 * math.sin(t)]
+                shot = {"image": os.path.join(a.dataset, "images", name + ".jpg"), "focal_px": cam["focal_px"],
+                        "principal_point": cam["principal_point"], "camera_height_m": 1.6, "corners_px": rough}
+                rp, fp = os.path.join(d, "rough.json"), os.path.join(d, "fit.json")
+                json.dump(shot, open(rp, "w"))
+                r = subprocess.run([a.photowalk, "detect", "--hint", rp, "-o", fp], capture_output=True, text=True)
+                if r.returncode not in (0, 3):
+                    print("%s trial %d: exit %d %s" % (name, trial, r.returncode, r.stderr.strip()))
+                    continue
+                fit = json.load(open(fp))["corners_px"]
+                err = {k: math.dist(fit[k], careful[k]) for k in careful}
+                far = max(err["P%d" % i] for i in range(1, 5)); near = max(err["P%d" % i] for i in range(5, 9))
+                far_all.append(far); near_all.append(near)
+                print("%s trial %2d exit %d  far worst %.2f px  near worst %.2f px" % (name, trial, r.returncode, far, near))
+    print("%d fits: far-wall corners within 2 px in %d (median worst %.2f px); near corners within 2 px in %d (median worst %.2f px)" % (
+        len(far_all), sum(x <= 2 for x in far_all), statistics.median(far_all), sum(x <= 2 for x in near_all),
+        statistics.median(near_all)))
+
+if __name__ == "__main__":
+    main()
