@@ -65,7 +65,7 @@ const Document* BuildingMode::foreignShot() const {
 
 std::vector<fs::path> BuildingMode::unsavedFiles() const {
   std::vector<fs::path> files;
-  if (const Document* other = foreignShot(); other && other->dirty()) files.push_back(other->path());
+  if (const Document* other = foreignShot(); other && other->hasUnsavedEdits()) files.push_back(other->path());
   if (building_) {
     for (fs::path& file : building_->unsavedFiles(lentShot())) files.push_back(std::move(file));
   }

@@ -104,6 +104,7 @@ void EditMode::showDocument(app::Shell& shell, Document doc) {
   selected_ = -1;
   drag_.reset();
   snapShown_.reset();
+  lastMoved_ = -1;
   panFrom_.reset();
   measuredShot_.reset();
   layOut(shell);
@@ -244,8 +245,12 @@ void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
   const int corner = handleAt(canvas_, doc_->shot(), cursorPx_, kGrabRadiusPx);
   if (pickingReference_ && pickReference(shell, corner)) return;
   select(corner);
-  if (corner >= 0) drag_ = Drag{corner, doc_->shot(), cursorPx_};
-  else if (principalHandleAt(cursorPx_) >= 0) drag_ = Drag{kPrincipalPointHandle, doc_->shot(), cursorPx_};
+  if (corner >= 0) {
+    drag_ = Drag{corner, doc_->shot(), cursorPx_};
+    lastMoved_ = corner;
+  } else if (principalHandleAt(cursorPx_) >= 0) {
+    drag_ = Drag{kPrincipalPointHandle, doc_->shot(), cursorPx_};
+  }
 }
 
 void EditMode::onCursor(const glm::dvec2& p) {
@@ -348,6 +353,7 @@ void EditMode::nudge(const glm::dvec2& delta) {
   if (!doc_ || drag_ || selected_ < 0) return;
   Shot shot = doc_->shot();
   shot.cornersPx[selected_] += delta;
+  lastMoved_ = selected_;
   doc_->apply(shot, std::string("nudge ") + metrology::cornerName(selected_));
   nudgeLoupeUntil_ = step_ + kNudgeLoupeSteps;
 }
@@ -430,7 +436,7 @@ void EditMode::remeasure() {
   }
   if (measuredShot_ && sameShot(*measuredShot_, doc_->shot())) return;
   measuredShot_ = doc_->shot();
-  live_ = measureLive(*measuredShot_);
+  live_ = measureLive(*measuredShot_, lastMoved_);
 }
 
 void EditMode::update(app::Shell& shell, double stepS) {

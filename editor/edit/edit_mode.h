@@ -184,6 +184,7 @@ class EditMode : public app::AppMode {
 
   int selected_ = -1;
   std::optional<Drag> drag_;
+  int lastMoved_ = -1;  // the corner dragged or nudged last: the warnings name it
   // Snapping a dragged corner onto its edge junction: the photo's snapper, made at the
   // first drag of a document; the junction the corner would go to on release (shown
   // while dragging; Alt keeps the corner where it is).

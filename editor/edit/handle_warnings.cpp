@@ -90,8 +90,9 @@ void coincident(const metrology::Shot& shot, std::vector<HandleWarning>& out, st
 
 // Three corners of a plane on (or almost on) one line. The corner named is the odd
 // one out: a near corner on a far-wall line (or the reverse), else the middle one.
+// The corner moved last, when one of them is it, is the one to move back.
 void collinear(const metrology::Shot& shot, const metrology::Measurement* m, const std::array<bool, kCornerCount>& inGroup,
-               std::vector<HandleWarning>& out) {
+               int moved, std::vector<HandleWarning>& out) {
   std::array<std::array<bool, kCornerCount>, kCornerCount> said{};  // (corner, line's first corner)
   for (int plane = 0; plane < kPlaneCount; ++plane) {
     const auto& q = kPlaneCorners[plane];
@@ -104,7 +105,9 @@ void collinear(const metrology::Shot& shot, const metrology::Measurement* m, con
       if (!(sine < std::sin(glm::radians(kAlmostCollinearDeg)))) continue;
       const int nearCount = isNear(t[0]) + isNear(t[1]) + isNear(t[2]);
       int odd = t[1];
-      if (nearCount == 1 || nearCount == 2) {
+      if (std::find(t.begin(), t.end(), moved) != t.end()) {
+        odd = moved;
+      } else if (nearCount == 1 || nearCount == 2) {
         for (int k : t) {
           if ((nearCount == 1) == isNear(k)) odd = k;
         }
@@ -153,8 +156,10 @@ bool segmentsCross(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
 
-// A quad that crosses itself: its two opposite edges that cross, and the corners to swap.
-void crossed(const metrology::Shot& shot, const std::array<bool, kCornerCount>& inGroup, std::vector<HandleWarning>& out) {
+// A quad that crosses itself: its two opposite edges that cross, and the corners to
+// swap; or, when the corner moved last is one of the quad's, that corner to move back.
+void crossed(const metrology::Shot& shot, const std::array<bool, kCornerCount>& inGroup, int moved,
+             std::vector<HandleWarning>& out) {
   for (int plane = 0; plane < kPlaneCount; ++plane) {
     const auto& q = kPlaneCorners[plane];
     if (inGroup[q[0]] || inGroup[q[1]] || inGroup[q[2]] || inGroup[q[3]]) continue;
@@ -164,11 +169,18 @@ void crossed(const metrology::Shot& shot, const std::array<bool, kCornerCount>& 
       if (!segmentsCross(c(i), c(i + 1), c(i + 2), c(i + 3))) continue;
       HandleWarning w;
       const int a = q[(i + 1) % 4], b = q[(i + 2) % 4];
-      w.handles = {a, b};
       w.label = "crossed";
       w.blocking = true;
-      w.text = "the " + spokenPlane(plane) + " quad " + quadName(plane) + " crosses itself: " + metrology::cornerName(a) +
-               " and " + metrology::cornerName(b) + " look swapped; drag each onto its own corner";
+      if (std::find(q.begin(), q.end(), moved) != q.end()) {
+        const char* name = metrology::cornerName(moved);
+        w.handles = {moved};
+        w.text = std::string(name) + " has crossed the " + spokenPlane(plane) + " quad " + quadName(plane) +
+                 " over itself: drag " + name + " back onto its own corner";
+      } else {
+        w.handles = {a, b};
+        w.text = "the " + spokenPlane(plane) + " quad " + quadName(plane) + " crosses itself: " + metrology::cornerName(a) +
+                 " and " + metrology::cornerName(b) + " look swapped; drag each onto its own corner";
+      }
       out.push_back(std::move(w));
       break;
     }
@@ -203,7 +215,8 @@ void vanishingBehind(const metrology::Shot& shot, std::vector<HandleWarning>& ou
 
 }  // namespace
 
-std::vector<HandleWarning> handleWarnings(const metrology::Shot& shot, const metrology::Measurement* measurement) {
+std::vector<HandleWarning> handleWarnings(const metrology::Shot& shot, const metrology::Measurement* measurement,
+                                          int moved) {
   std::vector<HandleWarning> out;
   for (int k = 0; k < kCornerCount; ++k) {
     if (!finite(shot.cornersPx[k])) {
@@ -216,8 +229,9 @@ std::vector<HandleWarning> handleWarnings(const metrology::Shot& shot, const met
 
   std::array<bool, kCornerCount> inGroup{};
   coincident(shot, out, inGroup);
-  crossed(shot, inGroup, out);
-  collinear(shot, measurement, inGroup, out);
+  if (moved < 0 || moved >= kCornerCount || inGroup[moved]) moved = -1;
+  crossed(shot, inGroup, moved, out);
+  collinear(shot, measurement, inGroup, moved, out);
   vanishingBehind(shot, out);
 
   // What metrology's check refuses and nothing above names (corners in the wrong
@@ -240,6 +254,11 @@ std::vector<HandleWarning> handleWarnings(const metrology::Shot& shot, const met
         for (int k : q) {
           if (std::find(w.handles.begin(), w.handles.end(), k) == w.handles.end()) w.handles.push_back(k);
         }
+      }
+      if (std::find(w.handles.begin(), w.handles.end(), moved) != w.handles.end()) {
+        const char* name = metrology::cornerName(moved);
+        w.handles = {moved};
+        w.text = std::string(name) + " moved: " + w.text + "; drag " + name + " back onto its own corner";
       }
       // Checks on the camera rather than the corners have no handle: the panel says them.
       if (!w.handles.empty()) out.push_back(std::move(w));

@@ -39,8 +39,11 @@ struct HandleWarning {
 };
 
 // Never throws; every number in the text finite. `measurement` is the shot's, or null
-// when it cannot be measured.
-std::vector<HandleWarning> handleWarnings(const metrology::Shot& shot, const metrology::Measurement* measurement);
+// when it cannot be measured. `moved` (P1..P8, or -1): the corner the person moved
+// last; a warning about corners that include it names it as the one to move (a line
+// it landed on, a quad it crossed), not a corner that stayed where it was.
+std::vector<HandleWarning> handleWarnings(const metrology::Shot& shot, const metrology::Measurement* measurement,
+                                          int moved = -1);
 
 // Draws a ring in the warning colour (red when blocking, amber otherwise) around each
 // warned handle, with its label (a handle's first warning only).

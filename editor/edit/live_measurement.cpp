@@ -7,7 +7,7 @@
 
 namespace pw::edit {
 
-LiveMeasurement measureLive(const metrology::Shot& shot) {
+LiveMeasurement measureLive(const metrology::Shot& shot, int moved) {
   LiveMeasurement live;
   try {
     if (auto vanishing = metrology::corridorVanishing(shot.cornersPx)) live.vanishing = *vanishing;
@@ -16,7 +16,7 @@ LiveMeasurement measureLive(const metrology::Shot& shot) {
       live.measurement = std::move(*measured);
       int culprit = -1;
       live.warnings = measurementWarnings(shot, *live.measurement, {}, &culprit);
-      live.handleWarnings = handleWarnings(shot, &*live.measurement);
+      live.handleWarnings = handleWarnings(shot, &*live.measurement, moved);
       if (culprit >= 0) {  // the corner that breaks the box: said on its handle
         const std::string prefix = "the corners do not make one box";
         for (auto it = live.warnings.begin(); it != live.warnings.end(); ++it) {
@@ -28,7 +28,7 @@ LiveMeasurement measureLive(const metrology::Shot& shot) {
       }
     } else {
       live.error = measured.message();
-      live.handleWarnings = handleWarnings(shot, nullptr);
+      live.handleWarnings = handleWarnings(shot, nullptr, moved);
     }
     // A dimension's uncertainty said on the handle to move is not said again in general.
     for (const HandleWarning& w : live.handleWarnings) {

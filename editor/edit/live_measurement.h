@@ -22,7 +22,8 @@ struct LiveMeasurement {
   std::vector<HandleWarning> handleWarnings;  // handle_warnings.h: on the handles and in words
 };
 
-// Never throws, whatever the corners: a failure is `error`.
-LiveMeasurement measureLive(const metrology::Shot& shot);
+// Never throws, whatever the corners: a failure is `error`. `moved`: the corner the
+// person moved last (P1..P8, or -1), which the warnings name as the one to move back.
+LiveMeasurement measureLive(const metrology::Shot& shot, int moved = -1);
 
 }  // namespace pw::edit

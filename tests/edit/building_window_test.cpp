@@ -317,6 +317,19 @@ TEST_F(Building, ClosingWithUnsavedChangesAsksSaveAllDiscardOrCancelAndTheWindow
   EXPECT_EQ(file["title"], "two corridors");
 }
 
+// Issue 23's finding: `photowalk edit corridor_a.png`, then close, switched to an empty
+// building plan asking "Unsaved changes in the building". A photo never edited has
+// nothing to lose: the window closes at once, from the editor, asking nothing.
+TEST_F(Building, ClosingAPhotoNeverEditedClosesAtOnceAskingNothing) {
+  const auto rows = edit("photo-close", dir_ / "corridor_a.png", "3 close\n40 quit\n");
+  ASSERT_GE(rows.size(), 3u);
+  EXPECT_LT(rows.size(), 10u) << "the window stayed after close";
+  for (const Row& row : rows) {
+    EXPECT_EQ(row.mode, "edit") << row.raw.dump();
+    EXPECT_TRUE(!row.raw.contains("question") || row.raw.at("question").is_null()) << row.raw.dump();
+  }
+}
+
 TEST_F(Building, ClosingFromTheShotEditorAsksAboutTheWholeBuildingAndDiscardWritesNothing) {
   const fs::path layout = layoutCopy("discard");
   const std::string before = *readFile(layout);

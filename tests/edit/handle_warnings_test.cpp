@@ -266,5 +266,36 @@ TEST(HandleWarnings, DegenerateCornerSetsNeverCrashNorPrintNaN) {
   }
 }
 
+// The warnings name the corner that moved (issue 23's findings: P1 dragged onto P2 said
+// "P5 is almost on the line P1-P3"; P3 dragged above P1 said "P2 and P4 look swapped").
+// Every warning whose corners include the one moved tells a person to move that one.
+void expectEveryWarningNames(const metrology::Shot& shot, int moved) {
+  const LiveMeasurement live = measureLive(shot, moved);
+  ASSERT_FALSE(live.handleWarnings.empty()) << metrology::cornerName(moved);
+  for (const HandleWarning& w : live.handleWarnings) {
+    const bool concerns = std::find(w.handles.begin(), w.handles.end(), moved) != w.handles.end() ||
+                          std::find(w.related.begin(), w.related.end(), moved) != w.related.end();
+    if (!concerns) continue;
+    EXPECT_EQ(w.handles, std::vector<int>{moved}) << w.text;
+    EXPECT_NE(w.text.find(metrology::cornerName(moved)), std::string::npos) << w.text;
+    EXPECT_LT(w.text.find(metrology::cornerName(moved)), 12u) << "names " << metrology::cornerName(moved)
+                                                              << " first: " << w.text;
+  }
+}
+
+TEST(HandleWarnings, TheyNameTheCornerThatMoved) {
+  metrology::Shot ontoP2 = corridorShot();
+  ontoP2.cornersPx[P1] = ontoP2.cornersPx[P2] + glm::dvec2(-1, 20);  // onto the line P2-P4
+  expectEveryWarningNames(ontoP2, P1);
+
+  metrology::Shot aboveP1 = corridorShot();
+  aboveP1.cornersPx[P3] = aboveP1.cornersPx[P1] + glm::dvec2(0, -30);
+  expectEveryWarningNames(aboveP1, P3);
+  const LiveMeasurement live = measureLive(aboveP1, P3);
+  const HandleWarning* crossedWarning = findLabel(live.handleWarnings, "crossed");
+  ASSERT_TRUE(crossedWarning) << all(live.handleWarnings);
+  EXPECT_EQ(crossedWarning->text.find("P2 and P4"), std::string::npos) << crossedWarning->text;
+}
+
 }  // namespace
 }  // namespace pw::edit
