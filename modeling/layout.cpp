@@ -1,9 +1,11 @@
 #include "modeling/layout.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "base/atomic_file.h"
 
@@ -196,7 +198,31 @@ Result<BuildingPlan> planBuilding(const Layout& layout, const std::vector<metrol
     plan.openings.push_back(inHost);
     plan.openings.push_back(Opening{static_cast<int>(i), Surface::kNearEnd, {guestOverlap0, 0, guestOverlap1, height}});
   }
+  // Corridors that run through each other: their floors' footprints (plan x, z)
+  // intersected two by two.
+  std::vector<std::vector<cv::Point2f>> footprints(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double w2 = 0.5 * boxes[i].widthM, l = boxes[i].lengthM;
+    for (const glm::dvec2 c : {glm::dvec2(-w2, 0), glm::dvec2(w2, 0), glm::dvec2(w2, -l), glm::dvec2(-w2, -l)}) {
+      const glm::dvec4 world = plan.worldFromCorridor[i] * glm::dvec4(c.x, 0, c.y, 1);
+      footprints[i].emplace_back(static_cast<float>(world.x), static_cast<float>(world.z));
+    }
+  }
+  for (size_t a = 0; a < n; ++a) {
+    for (size_t b = a + 1; b < n; ++b) {
+      std::vector<cv::Point2f> shared;
+      const float area = cv::intersectConvexConvex(footprints[a], footprints[b], shared, true);
+      if (area >= kOverlapAreaM2) plan.overlaps.push_back({int(a), int(b), area});
+    }
+  }
   return plan;
+}
+
+std::string overlapText(const Layout& layout, const CorridorOverlap& overlap) {
+  char area[32];
+  std::snprintf(area, sizeof area, "%.1f", overlap.areaM2);
+  return "corridors \"" + layout.corridors[overlap.a].name + "\" and \"" + layout.corridors[overlap.b].name +
+         "\" run through each other (" + area + " m² of floor in both): move one of them";
 }
 
 }  // namespace pw::modeling

@@ -75,11 +75,25 @@ struct Opening {
   Rect rect;
 };
 
+// Two corridors whose floors overlap: they run through each other (a wall of one
+// stands inside the other), which no building has. The model is still built; the plan
+// and `build` warn (overlapText).
+struct CorridorOverlap {
+  int a = -1, b = -1;   // corridor indices, a < b
+  double areaM2 = 0;    // of floor they share
+};
+inline constexpr double kOverlapAreaM2 = 0.05;  // less is a corridor touching another's wall
+
 struct BuildingPlan {
   std::vector<glm::dmat4> worldFromCorridor;  // one per corridor
   std::vector<Opening> openings;              // in hosts' walls and in guests' near ends
   std::vector<bool> attached;                 // true: the corridor starts at another's wall
+  std::vector<CorridorOverlap> overlaps;      // pairs whose floors overlap by kOverlapAreaM2 or more
 };
+
+// One line: 'corridors "hall" and "wing" run through each other (2.4 m² of floor in
+// both): move one of them'.
+std::string overlapText(const Layout& layout, const CorridorOverlap& overlap);
 
 // Places every corridor and finds the openings. Errors name the corridor and say
 // what is wrong (an opening wider than the wall, an offset beyond the wall's end).

@@ -107,6 +107,9 @@ int runBuild(Args& args) {
 
   auto model = modeling::buildModel(layout, options, measureOptions);
   if (!model) return fail(model.message());
+  for (const modeling::CorridorOverlap& overlap : model->plan.overlaps) {
+    std::fprintf(stderr, "warning: %s\n", modeling::overlapText(model->layout, overlap).c_str());
+  }
 
   // Everything that can fail on the input has failed by now; write the files, into
   // folders made for them if need be (as tour does).

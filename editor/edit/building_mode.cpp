@@ -374,6 +374,7 @@ void BuildingMode::walk(app::Shell& shell) {
     shell.showMessage("walk: no model: " + model.message());
     return;
   }
+  for (const std::string& warning : planWarnings_) shell.showMessage("warning: " + warning);
   if (Status shown = walk_.showScene(shell, std::move(model->scene), kName); !shown) {
     shell.showMessage("walk: no model: " + shown.message());
     return;
@@ -455,6 +456,12 @@ void BuildingMode::update(app::Shell& shell, double) {
   }
   auto plan = modeling::planBuilding(building_->layout(), boxes_);
   planError_ = plan ? std::string() : plan.message();
+  planWarnings_.clear();
+  if (plan) {
+    for (const modeling::CorridorOverlap& o : plan->overlaps) {
+      planWarnings_.push_back(modeling::overlapText(building_->layout(), o));
+    }
+  }
   updatePreview(shell);
 }
 
@@ -509,7 +516,8 @@ void BuildingMode::traceRow(app::TraceRow& row) const {
                         {"corridors", corridors},
                         {"selected", selected_.empty() ? ordered_json(nullptr) : ordered_json(selected_)},
                         {"snap", drag_ && drag_->snap ? attachJson(drag_->before, drag_->snap->attach) : ordered_json(nullptr)},
-                        {"error", planError_.empty() ? ordered_json(nullptr) : ordered_json(planError_)}};
+                        {"error", planError_.empty() ? ordered_json(nullptr) : ordered_json(planError_)},
+                        {"warnings", planWarnings_}};
   row.add("building", building);
   editor_.addDocumentTrace(row);
   traceQuestion(row);

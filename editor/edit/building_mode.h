@@ -140,6 +140,7 @@ class BuildingMode : public app::AppMode {
   std::optional<Building> building_;
   std::string openError_;
   std::string planError_;  // why the layout as it is cannot be built (planBuilding), or empty
+  std::vector<std::string> planWarnings_;  // corridors that run through each other (planBuilding's overlaps)
   // The plan as last computed (update, and after each edit).
   std::vector<metrology::Dimensions> boxes_;
   std::vector<glm::dmat4> world_;

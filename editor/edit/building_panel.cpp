@@ -24,7 +24,8 @@ const char* const kPlanKeys =
     "left drag a corridor  move it; its near end snaps to\n"
     "                      a far wall or a side wall (Alt: no snap)\n"
     "drag the round handle turn it (Shift: 15-degree steps)\n"
-    "R, Shift+R            turn the selected one 90 degrees left, right\n"
+    "R, Shift+R            turn the selected one 90 degrees left, right (an attached\n"
+    "                      one: the corridor it hangs from turns, carrying it)\n"
     "wheel                 zoom about the cursor\n"
     "middle/right drag     pan\n"
     "F                     fit the building\n"
@@ -81,6 +82,7 @@ void BuildingMode::drawPanel(app::Shell& shell) {
   if (ImGui::Button("Walk (W)")) walk(shell);
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   if (!planError_.empty()) wrapped(kErrorColour, planError_);
+  for (const std::string& warning : planWarnings_) wrapped(kWarningColour, "warning: " + warning);
   drawCorridorList(shell);
   drawPlacement(shell);
   drawAddShot(shell);

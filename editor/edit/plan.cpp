@@ -192,11 +192,16 @@ Layout attachCorridor(Layout layout, int i, const Attachment& attach, int* newIn
 
 Layout rotateCorridor(Layout layout, const std::vector<glm::dmat4>& world, int i, double deltaDeg) {
   if (i < 0 || size_t(i) >= layout.corridors.size() || size_t(i) >= world.size()) return layout;
-  const modeling::LayoutEntry& entry = layout.corridors[i];
-  PlanPose pose = poseOf(world[i]);
-  if (!entry.attach) pose = {{entry.position.x, entry.position.z}, entry.rotationDeg};  // exact, as written
-  pose.rotationDeg += deltaDeg;
-  return placeCorridor(std::move(layout), i, pose);
+  // An attached corridor keeps its attachment: the placed corridor it hangs from turns,
+  // and every corridor attached to that one with it.
+  int root = i;
+  for (size_t steps = 0; layout.corridors[root].attach && steps < layout.corridors.size(); ++steps) {
+    root = layout.corridors[root].attach->to;
+  }
+  if (layout.corridors[root].attach) return layout;  // a cycle (the file's order rule forbids it)
+  const modeling::LayoutEntry& entry = layout.corridors[root];
+  const PlanPose pose{{entry.position.x, entry.position.z}, entry.rotationDeg + deltaDeg};  // exact, as written
+  return placeCorridor(std::move(layout), root, pose);
 }
 
 bool sameLayout(const Layout& a, const Layout& b) {

@@ -80,8 +80,9 @@ modeling::Layout attachCorridor(modeling::Layout layout, int i, const modeling::
 // Removes corridor `i`; the corridors attached to it stay where they are, placed. The
 // last corridor stays (a layout has one at least).
 modeling::Layout removeCorridor(modeling::Layout layout, const std::vector<glm::dmat4>& world, int i);
-// Turns corridor `i` by `deltaDeg` about its near-end centre (detaching it), the
-// rotation kept in (-180, 180].
+// Turns corridor `i` by `deltaDeg` about its near-end centre, the rotation kept in
+// (-180, 180]. An attached corridor keeps its attachment: the placed corridor it hangs
+// from (through others) turns about its own near end, and all attached to it with it.
 modeling::Layout rotateCorridor(modeling::Layout layout, const std::vector<glm::dmat4>& world, int i, double deltaDeg);
 
 // Every field writeLayoutFile writes, equal.

@@ -160,7 +160,7 @@ TEST(Plan, AttachingToACorridorListedLaterListsTheHostsFirst) {
   EXPECT_TRUE(sameLayout(refused, sorted));
 }
 
-TEST(Plan, TurningByQuarterTurnsKeepsWholeDegreesAndDetachesAGuestWhereItIs) {
+TEST(Plan, TurningByQuarterTurnsKeepsWholeDegreesAndAGuestsAttachment) {
   Layout layout = twoApart();
   const auto world = placeCorridors(layout, {kHall, kWing});
   Layout turned = layout;
@@ -170,14 +170,18 @@ TEST(Plan, TurningByQuarterTurnsKeepsWholeDegreesAndDetachesAGuestWhereItIs) {
   EXPECT_EQ(rotateCorridor(layout, world, 1, -90.0).corridors[1].rotationDeg, -90.0);
   EXPECT_EQ(rotateCorridor(layout, world, 1, 270.0).corridors[1].rotationDeg, -90.0);
   EXPECT_EQ(rotateCorridor(layout, world, 1, 180.0).corridors[1].position, layout.corridors[1].position);
-  // An attached corridor turned: placed at its attached pose, turned about its near end.
+  // An attached corridor turned (issue 23's finding: R detached it): it stays attached,
+  // and its host turns, carrying it.
   layout.corridors[1].attach = Attachment{0, Side::kLeft, 5.0};
   const auto attachedWorld = placeCorridors(layout, {kHall, kWing});
-  const Layout free = rotateCorridor(layout, attachedWorld, 1, -90.0);
-  EXPECT_FALSE(free.corridors[1].attach.has_value());
-  EXPECT_NEAR(free.corridors[1].position.x, -1.5, 1e-12);
-  EXPECT_NEAR(free.corridors[1].position.z, -5.0, 1e-12);
-  EXPECT_EQ(free.corridors[1].rotationDeg, 0.0);  // 90 (on the left wall) - 90
+  const Layout kept = rotateCorridor(layout, attachedWorld, 1, -90.0);
+  ASSERT_TRUE(kept.corridors[1].attach.has_value());
+  EXPECT_EQ(kept.corridors[1].attach->to, 0);
+  EXPECT_EQ(kept.corridors[1].attach->side, Side::kLeft);
+  EXPECT_EQ(kept.corridors[1].attach->offsetM, 5.0);
+  EXPECT_EQ(kept.corridors[0].rotationDeg, layout.corridors[0].rotationDeg - 90.0);
+  EXPECT_EQ(kept.corridors[0].position, layout.corridors[0].position);
+  EXPECT_TRUE(sameLayout(rotateCorridor(kept, placeCorridors(kept, {kHall, kWing}), 1, 90.0), layout));
 }
 
 TEST(Plan, OpeningsAreWhereAnAttachedNearEndMeetsItsHostsWall) {

@@ -64,6 +64,32 @@ TEST(Layout, FarAttachmentContinuesTheCorridor) {
   EXPECT_NEAR(plan->openings[1].rect.s1, 2.5, 1e-9);
 }
 
+// Issue 23's finding: corridors that run through each other were accepted without a
+// word. Attached corridors touch at their opening and do not overlap; two placed ones
+// crossing do, with the floor they share.
+TEST(Layout, CorridorsThatRunThroughEachOtherAreFoundAttachedOnesAreNot) {
+  Layout chained = chainLayout({"a.json", "b.json"});
+  chained.corridors[1].attach = Attachment{0, Side::kLeft, 4.0};
+  auto attached = planBuilding(chained, {{2, 3, 10}, {1.5, 3, 6}});
+  ASSERT_TRUE(attached.ok()) << attached.message();
+  EXPECT_TRUE(attached->overlaps.empty());
+
+  Layout crossing = chainLayout({"a.json", "b.json"});
+  crossing.corridors[0].name = "hall";
+  crossing.corridors[1].name = "wing";
+  crossing.corridors[1].attach.reset();
+  crossing.corridors[1].position = {0, 0, -3};  // 2 m wide, 10 m long: crosses the hall
+  crossing.corridors[1].rotationDeg = 90;
+  auto plan = planBuilding(crossing, {{2, 3, 10}, {2, 3, 10}});
+  ASSERT_TRUE(plan.ok()) << plan.message();
+  ASSERT_EQ(plan->overlaps.size(), 1u);
+  EXPECT_EQ(plan->overlaps[0].a, 0);
+  EXPECT_EQ(plan->overlaps[0].b, 1);
+  EXPECT_NEAR(plan->overlaps[0].areaM2, 2.0, 1e-3);  // from the hall's centre line to its wall (1 m), 2 m wide
+  const std::string text = overlapText(crossing, plan->overlaps[0]);
+  EXPECT_NE(text.find("\"hall\" and \"wing\" run through each other"), std::string::npos) << text;
+}
+
 TEST(Layout, LeftAttachmentTurnsAndOpensTheWall) {
   Layout layout = chainLayout({"a.json", "b.json"});
   layout.corridors[1].attach = Attachment{0, Side::kLeft, 4.0};
