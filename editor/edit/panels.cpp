@@ -120,7 +120,8 @@ void EditMode::drawPanel(app::Shell& shell) {
   if (ImGui::Button("Redo")) redo(shell);
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Fit corners (E)")) fitCorners(shell);
+  if (ImGui::Button("Fit (E)")) fitCorners(shell);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("fit the eight corners to the photo's edges from where they are");
   ImGui::SameLine();
   ImGui::BeginDisabled(!live_.measurement);
   if (ImGui::Button("Walk (W)")) walk(shell);

@@ -38,6 +38,11 @@ void orbitCamera(engine::Camera& camera, const glm::vec3& centre, float yawRad, 
 // Moves `camera` towards `centre` (factor < 1) or away from it, keeping its
 // orientation; it stays at least 0.1 m from the centre.
 void dollyCamera(engine::Camera& camera, const glm::vec3& centre, float factor);
+// A level camera (no roll) looking at the middle of `bounds` from outside it, from the
+// side `from` stands on, 30 degrees above it, as near as shows all of it in its field of
+// view: where an orbit starts from when it leaves the photo's camera (inside the model,
+// a turn would look at a wall from behind).
+engine::Camera framedCamera(const engine::Bounds& bounds, const engine::Camera& from);
 
 // A pane's camera moved by the mouse about a centre: left drag over the pane orbits
 // (orbitCamera), the wheel over it moves nearer or farther (dollyCamera). The shot
@@ -136,6 +141,7 @@ class Preview {
   std::string error_;  // why the last build failed (the last model stays)
   engine::Camera photoCamera_;
   glm::vec3 centre_{0.0f};
+  engine::Bounds bounds_;
 
   engine::Camera camera_;
   bool followPhoto_ = true;  // the camera is the photo's until the pane is orbited or zoomed

@@ -92,6 +92,47 @@ TEST(PreviewCamera, OrbitingKeepsTheCentreWhereItIsInThePicture) {
   EXPECT_NEAR(std::asin(engine::forwardOf(camera).y), glm::radians(85.0f), 1e-3);
 }
 
+// Issue 23's findings: the orbited preview was rolled with the photo and a small model in
+// the void. Turning levels the camera; leaving the photo's camera frames the whole model.
+TEST(PreviewCamera, OrbitingFromARolledCameraLevelsIt) {
+  engine::Camera camera;
+  camera.position = {0.0f, 1.5f, 0.0f};
+  camera.orientation = engine::lookAtOrientation(camera.position, {0.0f, 1.4f, -5.0f}) *
+                       glm::angleAxis(glm::radians(8.0f), glm::vec3(0, 0, 1));  // rolled 8 degrees
+  const glm::vec3 right = glm::normalize(camera.orientation) * glm::vec3(1, 0, 0);
+  ASSERT_GT(std::abs(right.y), 0.1f);
+  orbitCamera(camera, {0.0f, 1.4f, -5.0f}, 0.05f, 0.0f);
+  const glm::vec3 levelled = glm::normalize(camera.orientation) * glm::vec3(1, 0, 0);
+  EXPECT_NEAR(levelled.y, 0.0f, 1e-5f);
+}
+
+TEST(PreviewCamera, FramingShowsTheWholeModelFromOutsideItAboveThePhotosSide) {
+  engine::Bounds bounds;
+  bounds.add(glm::vec3(-1.2f, 0.0f, -9.5f));
+  bounds.add(glm::vec3(1.2f, 2.8f, 3.0f));
+  engine::Camera photo;
+  photo.position = {0.1f, 1.5f, 0.5f};
+  photo.orientation = engine::lookAtOrientation(photo.position, {0.0f, 1.4f, -9.0f});
+  const engine::Camera framed = framedCamera(bounds, photo);
+  EXPECT_GT(framed.position.z, bounds.max.z);  // outside, on the photo's side
+  EXPECT_GT(framed.position.y, bounds.max.y);  // above
+  const glm::vec3 levelled = glm::normalize(framed.orientation) * glm::vec3(1, 0, 0);
+  EXPECT_NEAR(levelled.y, 0.0f, 1e-5f);
+  glm::dvec2 lo(1e9), hi(-1e9);
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner(k & 1 ? bounds.max.x : bounds.min.x, k & 2 ? bounds.max.y : bounds.min.y,
+                           k & 4 ? bounds.max.z : bounds.min.z);
+    const glm::dvec3 p = engine::projectToPixel(framed, 640, 480, corner);
+    ASSERT_GT(p.z, 0.0) << k;
+    lo = glm::min(lo, glm::dvec2(p)), hi = glm::max(hi, glm::dvec2(p));
+  }
+  EXPECT_GE(lo.x, 0.0);
+  EXPECT_GE(lo.y, 0.0);
+  EXPECT_LE(hi.x, 640.0);
+  EXPECT_LE(hi.y, 480.0);
+  EXPECT_GT(std::max((hi.x - lo.x) / 640.0, (hi.y - lo.y) / 480.0), 0.4);  // not a small model in the void
+}
+
 TEST(PreviewCamera, DollyingScalesTheDistanceToTheCentreDownToATenthOfAMetre) {
   engine::Camera camera;
   camera.position = {0.0f, 0.0f, 10.0f};
