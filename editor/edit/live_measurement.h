@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "editor/edit/handle_warnings.h"
+#include "metrology/input_sigma.h"
 #include "metrology/measure.h"
 #include "metrology/shot.h"
 #include "metrology/vanishing.h"
@@ -23,6 +24,7 @@ struct LiveMeasurement {
 };
 
 // Never throws, whatever the corners: a failure is `error`.
-LiveMeasurement measureLive(const metrology::Shot& shot);
+// The measurement's ± carries the inputs by `origins` (metrology/input_sigma.h).
+LiveMeasurement measureLive(const metrology::Shot& shot, const metrology::InputOrigins& origins = {});
 
 }  // namespace pw::edit
