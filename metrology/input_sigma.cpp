@@ -1,6 +1,7 @@
 #include "metrology/input_sigma.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pw::metrology {
 
@@ -24,6 +25,18 @@ FocalOrigin focalOriginOf(const std::string& source) {
   }
   if (starts("default") || starts("assumed")) return FocalOrigin::kAssumed;
   return FocalOrigin::kGiven;
+}
+
+WeighedFocal weighFocal(double firstPx, double firstSigma, double secondPx, double secondSigma) {
+  WeighedFocal out{firstPx, firstSigma, false};
+  if (!(firstPx > 0) || !(secondPx > 0) || !(firstSigma > 0) || !(secondSigma > 0)) return out;
+  const double difference = std::log(secondPx / firstPx);
+  if (std::abs(difference) > 2.0 * std::hypot(firstSigma, secondSigma)) return out;
+  const double w1 = 1.0 / (firstSigma * firstSigma), w2 = 1.0 / (secondSigma * secondSigma);
+  out.focalPx = firstPx * std::exp(difference * w2 / (w1 + w2));
+  out.sigmaRelative = 1.0 / std::sqrt(w1 + w2);
+  out.usedSecond = true;
+  return out;
 }
 
 MeasureOptions withInputSigmas(MeasureOptions options, const Shot& shot, const InputOrigins& origins) {

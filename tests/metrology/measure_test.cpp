@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "metrology/input_sigma.h"
 #include "metrology/measure.h"
 #include "tests/metrology/synthetic_corridor.h"
 
@@ -274,6 +275,22 @@ TEST(MeasureSigma, EachInputsShareAddsInQuadrature) {
   EXPECT_EQ(top->key, "focal_length");
   EXPECT_GT(m->sigmaSources[2].sigma.lengthM, 0.15 * c.lengthM);
   EXPECT_NE(dimensionWithSource(*m, 2).find("(mostly: the assumed focal length)"), std::string::npos);
+}
+
+TEST(MeasureSigma, FocalLengthsWeighedByInverseVariance) {
+  // Equal sigmas: the geometric mean, sigma / sqrt(2).
+  WeighedFocal w = weighFocal(600, 0.03, 630, 0.03);
+  EXPECT_TRUE(w.usedSecond);
+  EXPECT_NEAR(w.focalPx, std::sqrt(600.0 * 630.0), 1e-9);
+  EXPECT_NEAR(w.sigmaRelative, 0.03 / std::sqrt(2.0), 1e-12);
+  // A second estimate four times as uncertain moves the first by a seventeenth.
+  w = weighFocal(647, 0.03, 700, 0.12);
+  EXPECT_NEAR(std::log(w.focalPx / 647), std::log(700.0 / 647) / 17, 1e-12);
+  // Beyond 2 sigma of their difference: the first alone.
+  w = weighFocal(647, 0.03, 500, 0.10);
+  EXPECT_FALSE(w.usedSecond);
+  EXPECT_EQ(w.focalPx, 647);
+  EXPECT_EQ(w.sigmaRelative, 0.03);
 }
 
 TEST(MeasureSigma, DigitsFollowTheSigma) {
