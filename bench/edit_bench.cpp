@@ -122,7 +122,7 @@ int main() {
   }();
   const double stepMs = perStepMs(shot, [&](const metrology::Shot& s) {
     doc.setLive(s);
-    const LiveMeasurement live = measureLive(doc.shot());
+    const LiveMeasurement live = measureLive(doc.shot(), doc.inputOrigins());  // as the editor measures
     buildOverlay(drag, doc.shot(), live);
   });
   // P5 dragged 42 px away from where the box puts it (0.7 px a step, as a hand drags at
@@ -132,7 +132,7 @@ int main() {
       shot,
       [&](const metrology::Shot& s) {
         doc.setLive(s);
-        const LiveMeasurement live = measureLive(doc.shot());
+        const LiveMeasurement live = measureLive(doc.shot(), doc.inputOrigins());  // as the editor measures
         warnings = live.warnings.size();
         buildOverlay(drag, doc.shot(), live);
       },

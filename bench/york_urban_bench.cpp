@@ -30,6 +30,7 @@
 #include "metrology/detect/detect.h"
 #include "metrology/detect/line_segments.h"
 #include "metrology/detect/vanishing_points.h"
+#include "metrology/input_sigma.h"
 
 namespace {
 
@@ -272,6 +273,37 @@ int main(int argc, char** argv) {
   printTotals("Indoor photos (corridor, corridor_partial, indoor_other)", rows, true);
   std::printf("\nfocal withheld: photowalk as detect runs it (second finite vanishing point, else the 28 mm default); "
               "Lu: from two finite points fitted to its line clusters, iterated from f = long side\n");
+
+  // Issue 22 part 6: the EXIF's focal length (the camera's FocalLengthIn35mmFilm 35 mm,
+  // by the diagonal: 4.1% short of the calibration) weighed with a second finite
+  // vanishing point's (metrology/input_sigma.h's weighFocal), at the sigma each is
+  // given. photowalk's where detect found one (focal_source vanishing_points), Lu's
+  // wherever it gives one.
+  {
+    const double exifPx = 35.0 / std::hypot(36.0, 24.0) * std::hypot(640.0, 480.0);
+    const auto report = [&](const char* name, bool lu, double secondSigma) {
+      std::vector<double> errors;
+      int used = 0, within5 = 0;
+      for (const Row& r : rows) {
+        const MethodRow& x = lu ? r.lu : r.pw;
+        double weighed = exifPx;
+        if (std::isfinite(x.focalPx) && (lu || x.focalSource == "vanishing_points")) {
+          const auto w = pw::metrology::weighFocal(exifPx, pw::metrology::kExif35mmFocalSigmaRelative, x.focalPx, secondSigma);
+          weighed = w.focalPx;
+          used += w.usedSecond;
+        }
+        errors.push_back(std::abs(100.0 * (weighed / f - 1.0)));
+        within5 += errors.back() <= 5.0;
+      }
+      std::printf("  %-44s median |err| %5.1f%%, within 5%%: %2d of %zu, the second used in %d\n", name, median(errors),
+                  within5, rows.size(), used);
+    };
+    std::printf("\nfocal length from the EXIF (35 mm equivalent: %.1f px, %+.1f%%), weighed with a second point's:\n", exifPx,
+                100.0 * (exifPx / f - 1.0));
+    report("EXIF alone", false, 0.0);
+    report("EXIF + photowalk's point (sigma 0.21)", false, pw::metrology::kVanishingFocalSigmaRelative);
+    report("EXIF + Lu's two points (sigma 0.13)", true, 0.13);
+  }
 
   if (!jsonOut.empty()) {
     std::ofstream o(jsonOut);

@@ -1,6 +1,8 @@
 #include "metrology/measure.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
@@ -187,10 +189,18 @@ Result<Measurement> measurePinhole(const Shot& shot, const Intrinsics& k, const 
   auto gFinal = numericJacobian(finalF, raw, steps, kOutputCount);
   if (!gFinal) return gFinal.error();
   cv::Mat covariance = propagateCovariance(*gFinal, outputCovariance) * (options.cornerSigmaPx * options.cornerSigmaPx);
+  {
+    const std::vector<double> sdCorners = standardDeviations(covariance);
+    m.sigmaSources.push_back({"corners", "the corners", {sdCorners[kOutW], sdCorners[kOutH], sdCorners[kOutL]}});
+  }
   if (heightGiven && options.cameraHeightSigmaM > 0) {
     cv::Mat dh = cv::Mat::zeros(kOutputCount, 1, CV_64F);
     for (int i = kOutW; i <= kOutZ; ++i) dh.at<double>(i) = (*finalOutputs)[i] / h;
     covariance += dh * dh.t() * (options.cameraHeightSigmaM * options.cameraHeightSigmaM);
+    const double r = options.cameraHeightSigmaM / h;  // the metric outputs are proportional to h
+    m.sigmaSources.push_back({"camera_height", options.cameraHeightSigmaName,
+                              {std::abs((*finalOutputs)[kOutW]) * r, std::abs((*finalOutputs)[kOutH]) * r,
+                               std::abs((*finalOutputs)[kOutL]) * r}});
   }
   const std::vector<double> sd = standardDeviations(covariance);
   const std::vector<double>& o = *finalOutputs;
@@ -296,7 +306,116 @@ std::optional<Measurement> measureWithLensFromCorners(const Shot& shot, const In
   return m;
 }
 
+// Half the spread of the dimensions measured with one input moved by -sigma and
+// +sigma (`measureAt(-1)`, `measureAt(+1)`); one side's distance from `m` when the
+// other does not measure; nullopt when neither does.
+std::optional<Dimensions> spreadOf(const Measurement& m,
+                                   const std::function<std::optional<Dimensions>(double)>& measureAt) {
+  const std::optional<Dimensions> lo = measureAt(-1.0), hi = measureAt(1.0);
+  const auto half = [](const Dimensions& a, const Dimensions& b, double f) {
+    return Dimensions{std::abs(a.widthM - b.widthM) * f, std::abs(a.heightM - b.heightM) * f,
+                      std::abs(a.lengthM - b.lengthM) * f};
+  };
+  if (lo && hi) return half(*lo, *hi, 0.5);
+  if (lo) return half(*lo, m.size, 1.0);
+  if (hi) return half(*hi, m.size, 1.0);
+  return std::nullopt;
+}
+
+// The focal length's, the principal point's and the distortion's shares
+// (MeasureOptions), added to m.sigmaSources and m.sigma.
+void addInputSigmas(const Shot& shot, const MeasureOptions& options, Measurement& m) {
+  MeasureOptions plain = options;
+  plain.focalSigmaRelative = plain.principalPointSigmaPx = plain.distortionSigmaK1 = 0;
+  plain.cameraHeightSigmaM = 0;
+  const auto measureWith = [&](const Intrinsics& lens) -> std::optional<Dimensions> {
+    auto r = measureThroughLens(shot, lens, plain);
+    if (!r) return std::nullopt;
+    return r->size;
+  };
+  if (options.focalSigmaRelative > 0) {
+    auto s = spreadOf(m, [&](double side) {
+      Intrinsics lens = m.camera;
+      lens.focalPx *= std::exp(side * options.focalSigmaRelative);
+      return measureWith(lens);
+    });
+    if (s) m.sigmaSources.push_back({"focal_length", options.focalSigmaName, *s});
+  }
+  if (options.principalPointSigmaPx > 0) {
+    Dimensions total;
+    bool any = false;
+    for (int axis = 0; axis < 2; ++axis) {
+      auto s = spreadOf(m, [&](double side) {
+        Intrinsics lens = m.camera;
+        lens.principalPointPx[axis] += side * options.principalPointSigmaPx;
+        return measureWith(lens);
+      });
+      if (!s) continue;
+      any = true;
+      total.widthM = std::hypot(total.widthM, s->widthM);
+      total.heightM = std::hypot(total.heightM, s->heightM);
+      total.lengthM = std::hypot(total.lengthM, s->lengthM);
+    }
+    if (any) m.sigmaSources.push_back({"principal_point", "the principal point", total});
+  }
+  if (options.distortionSigmaK1 > 0) {
+    auto s = spreadOf(m, [&](double side) {
+      Intrinsics lens = m.camera;
+      lens.distortion.k1 += side * options.distortionSigmaK1;
+      if (!checkDistortion(lens.distortion)) return std::optional<Dimensions>{};
+      return measureWith(lens);
+    });
+    if (s) m.sigmaSources.push_back({"distortion", "the lens distortion", *s});
+  }
+  Dimensions total;
+  for (const SigmaSource& source : m.sigmaSources) {
+    total.widthM = std::hypot(total.widthM, source.sigma.widthM);
+    total.heightM = std::hypot(total.heightM, source.sigma.heightM);
+    total.lengthM = std::hypot(total.lengthM, source.sigma.lengthM);
+  }
+  m.sigma = total;
+}
+
 }  // namespace
+
+double dimensionOf(const Dimensions& d, int which) {
+  return which == 0 ? d.widthM : which == 1 ? d.heightM : d.lengthM;
+}
+
+Dimensions cornerSigma(const Measurement& m) {
+  for (const SigmaSource& s : m.sigmaSources) {
+    if (s.key == "corners") return s.sigma;
+  }
+  return m.sigma;
+}
+
+const SigmaSource* dominantSigmaSource(const Measurement& m, int which) {
+  const SigmaSource* best = nullptr;
+  for (const SigmaSource& s : m.sigmaSources) {
+    if (!best || dimensionOf(s.sigma, which) > dimensionOf(best->sigma, which)) best = &s;
+  }
+  return best;
+}
+
+std::string dimensionText(double valueM, double sigmaM, const char* plusMinus) {
+  int decimals = 3;
+  if (std::isfinite(sigmaM) && sigmaM > 0) {
+    const double magnitude = std::floor(std::log10(sigmaM));
+    const double leading = sigmaM / std::pow(10.0, magnitude);
+    decimals = static_cast<int>(-magnitude) + (leading < 2.95 ? 1 : 0);
+    decimals = std::clamp(decimals, 0, 3);
+  }
+  char text[96];
+  std::snprintf(text, sizeof text, "%.*f m %s %.*f", decimals, valueM, plusMinus, decimals, sigmaM);
+  return text;
+}
+
+std::string dimensionWithSource(const Measurement& m, int which, const char* plusMinus) {
+  std::string text = dimensionText(dimensionOf(m.size, which), dimensionOf(m.sigma, which), plusMinus);
+  const SigmaSource* top = dominantSigmaSource(m, which);
+  if (top && m.sigmaSources.size() > 1) text += " (mostly: " + top->name + ")";
+  return text;
+}
 
 Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& options) {
   PW_TRY(checkShot(shot));
@@ -308,12 +427,17 @@ Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& opti
   }
   auto intrinsics = shotIntrinsics(shot);
   if (!intrinsics) return intrinsics.error();
+  for (double v : {options.focalSigmaRelative, options.principalPointSigmaPx, options.distortionSigmaK1}) {
+    if (!(v >= 0) || !std::isfinite(v)) return makeError("an input's standard deviation must be a number >= 0");
+  }
   auto m = measureThroughLens(shot, *intrinsics, options);
   if (!m) return m;
   m->distortionSource = shot.distortion ? DistortionSource::kShot : DistortionSource::kNone;
   if (!shot.distortion && options.distortionFromCorners && m->reprojectionRmsPx > kDistortionResidualPx) {
-    if (auto lens = measureWithLensFromCorners(shot, *intrinsics, options, m->reprojectionRmsPx)) return *lens;
+    if (auto lens = measureWithLensFromCorners(shot, *intrinsics, options, m->reprojectionRmsPx)) *m = std::move(*lens);
   }
+  addInputSigmas(shot, options, *m);
+  if (!allFinite(*m)) return makeError("the measurement's uncertainty is not finite; the corners are degenerate");
   return m;
 }
 

@@ -8,6 +8,8 @@
 
 #include <array>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -30,6 +32,19 @@ struct MeasureOptions {
   double cornerSigmaPx = 1.0;
   // Standard deviation of the given camera height (m); 0 treats it as exact.
   double cameraHeightSigmaM = 0.0;
+  // The other inputs' standard deviations (issue 23): each is carried into the
+  // dimensions by measuring again at the input moved by one sigma either way (half the
+  // difference, so a focal length far off is not linearised), and combined with the
+  // corners' in quadrature. 0 treats the input as exact (today's default).
+  // The focal length's, relative (0.25: 25%), moved as f·e^{±σ}.
+  double focalSigmaRelative = 0.0;
+  // Of the principal point's u and v each (px).
+  double principalPointSigmaPx = 0.0;
+  // Of the lens's radial k1 (distortion.h, normalised units).
+  double distortionSigmaK1 = 0.0;
+  // How the sources are named in "(mostly: the assumed focal length)".
+  std::string focalSigmaName = "the focal length";
+  std::string cameraHeightSigmaName = "the camera height";
   // When the shot gives no distortion and the corners miss the fitted box by more than
   // kDistortionResidualPx (RMS), try a radial k1 (distortion.h) that the residual would
   // come from; it is kept only when it brings the corners onto the box (RMS under a
@@ -72,10 +87,21 @@ enum class DistortionSource {
 };
 const char* distortionSourceName(DistortionSource source);
 
+// One input's share of the uncertainty: the dimensions' standard deviations from it
+// alone (their squares add up to Measurement::sigma's).
+struct SigmaSource {
+  std::string key;   // "corners", "focal_length", "camera_height", "principal_point", "distortion"
+  std::string name;  // as said after "mostly:" ("the assumed focal length")
+  Dimensions sigma;
+};
+
 struct Measurement {
   Method method = Method::kGeneral;
   Dimensions size;
-  Dimensions sigma;  // one standard deviation, first order (uncertainty.h)
+  // One standard deviation: every source of sigmaSources in quadrature (the corners'
+  // first order, uncertainty.h; the others' by measuring again, MeasureOptions).
+  Dimensions sigma;
+  std::vector<SigmaSource> sigmaSources;  // the corners' first, then those with a sigma
   double cornerSigmaPx = 1.0;
   // From the corners as given, or where the pinhole would show them when the lens
   // has distortion (then so are the horizon and the vanishing points).
@@ -103,6 +129,20 @@ struct Measurement {
 // length is then only checked), else from the reference length. Every number in a
 // successful result is finite; failures are one line naming the problem.
 Result<Measurement> measureCorridor(const Shot& shot, const MeasureOptions& options = {});
+
+// Which dimension: 0 width, 1 height, 2 length.
+double dimensionOf(const Dimensions& d, int which);
+// The corners' share of the sigma (m.sigma when the sources are not split).
+Dimensions cornerSigma(const Measurement& m);
+// The source with the largest share of that dimension's sigma (null without sources).
+const SigmaSource* dominantSigmaSource(const Measurement& m, int which);
+// "2.6 m ± 0.3": the sigma to one significant digit (two when it starts with 1 or 2),
+// the value to the same decimal place (millimetres at most, metres at least);
+// `plusMinus` "+/-" where the font has no ±.
+std::string dimensionText(double valueM, double sigmaM, const char* plusMinus = "\u00b1");
+// dimensionText with its largest source: "2.6 m ± 0.3 (mostly: the assumed focal length)";
+// without the parenthesis when the corners are the only source.
+std::string dimensionWithSource(const Measurement& m, int which, const char* plusMinus = "\u00b1");
 
 // Pixel (u, v) of a model-frame point as the measured camera sees it (through the
 // lens's distortion), and its depth (corridor_frame.h's projectToPixel).

@@ -120,10 +120,9 @@ void edgeLabel(cv::Mat& canvas, const std::string& text, const glm::dvec2& a, co
 // Rounds what would print as -0.00 to 0.
 double tidy(double v) { return std::abs(v) < 0.005 ? 0.0 : v; }
 
-std::string dimensionText(const char* name, double valueM, double sigmaM) {
-  char text[96];
-  std::snprintf(text, sizeof text, "%s %.3f +/- %.3f m", name, valueM, sigmaM);
-  return text;
+// "W 2.6 m +/- 0.3" (the Hershey font has no ±).
+std::string edgeText(const char* name, double valueM, double sigmaM) {
+  return std::string(name) + " " + dimensionText(valueM, sigmaM, "+/-");
 }
 
 cv::Mat toBgr(const cv::Mat& photo) {
@@ -244,17 +243,19 @@ Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, con
   }
 
   // Each dimension on its edge.
-  edgeLabel(canvas, dimensionText("W", m.size.widthM, m.sigma.widthM), at(c[P5]), at(c[P6]), at(vp), s, kWidthColour);
-  edgeLabel(canvas, dimensionText("H", m.size.heightM, m.sigma.heightM), at(c[P6]), at(c[P8]), at(vp), s, kHeightColour);
-  edgeLabel(canvas, dimensionText("L", m.size.lengthM, m.sigma.lengthM), at(c[P5]), at(c[P3]), at(c[P6]), s,
+  edgeLabel(canvas, edgeText("W", m.size.widthM, m.sigma.widthM), at(c[P5]), at(c[P6]), at(vp), s, kWidthColour);
+  edgeLabel(canvas, edgeText("H", m.size.heightM, m.sigma.heightM), at(c[P6]), at(c[P8]), at(vp), s, kHeightColour);
+  edgeLabel(canvas, edgeText("L", m.size.lengthM, m.sigma.lengthM), at(c[P5]), at(c[P3]), at(c[P6]), s,
             kLengthColour);
 
   // Legend.
   char lines[4][160];
-  std::snprintf(lines[0], sizeof lines[0], "photowalk measure (%s)   sigma %.2f px per corner", methodName(m.method),
-                m.cornerSigmaPx);
-  std::snprintf(lines[1], sizeof lines[1], "W %.3f +/- %.3f   H %.3f +/- %.3f   L %.3f +/- %.3f m", m.size.widthM,
-                m.sigma.widthM, m.size.heightM, m.sigma.heightM, m.size.lengthM, m.sigma.lengthM);
+  const SigmaSource* mostly = dominantSigmaSource(m, 2);
+  std::snprintf(lines[0], sizeof lines[0], "photowalk measure (%s)   +/- 1 sigma of every input, mostly %s",
+                methodName(m.method), mostly ? mostly->name.c_str() : "the corners");
+  std::snprintf(lines[1], sizeof lines[1], "%s   %s   %s", edgeText("W", m.size.widthM, m.sigma.widthM).c_str(),
+                edgeText("H", m.size.heightM, m.sigma.heightM).c_str(),
+                edgeText("L", m.size.lengthM, m.sigma.lengthM).c_str());
   std::snprintf(lines[2], sizeof lines[2], "camera f %.1f px  h %.3f m  yaw %.2f  pitch %.2f  roll %.2f deg", m.camera.focalPx,
                 m.cameraHeightM, tidy(m.pose.yawDeg), tidy(m.pose.pitchDeg), tidy(m.pose.rollDeg));
   std::snprintf(lines[3], sizeof lines[3], "reprojection RMS %.2f px   VP (%.1f, %.1f)   o clicked  + fitted",

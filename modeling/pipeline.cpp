@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "metrology/distortion.h"
+#include "metrology/input_sigma.h"
 
 #include "modeling/tour.h"
 
@@ -15,7 +16,10 @@ namespace pw::modeling {
 Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options) {
   auto loaded = loadShot(path);
   if (!loaded) return loaded.error();
-  auto measurement = metrology::measureCorridor(loaded->shot, options);
+  // The ± of every input by where it came from (metrology/input_sigma.h), as measure's.
+  metrology::InputOrigins origins;
+  origins.focal = metrology::focalOriginOf(loaded->focalSource);
+  auto measurement = metrology::measureCorridor(loaded->shot, metrology::withInputSigmas(options, loaded->shot, origins));
   if (!measurement) return makeError(path.string() + ": " + measurement.message());
   return MeasuredShot{std::move(*loaded), std::move(*measurement)};
 }

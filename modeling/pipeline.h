@@ -19,7 +19,9 @@ struct MeasuredShot {
   metrology::Measurement measurement;
 };
 
-// Reads the shot file and its photo and measures the corridor. Errors name the file.
+// Reads the shot file and its photo and measures the corridor, its ± carrying the
+// focal length by where it came from, the principal point and the distortion
+// (metrology/input_sigma.h) beside `options`' corners and camera height. Errors name the file.
 Result<MeasuredShot> measureShotFile(const std::filesystem::path& path, const metrology::MeasureOptions& options = {});
 
 // The camera that took the shot's photo, measured, placed as `build` places a first

@@ -1,5 +1,6 @@
 #include "modeling/shot_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
+#include "metrology/input_sigma.h"
 #include "modeling/exif.h"
 
 namespace pw::modeling {
@@ -92,7 +94,7 @@ class StderrCapture {
 
 // The focal length of a loaded shot (its photo decoded, oriented as shown): the one
 // given, else the shot's, else the photo's EXIF; and where it came from.
-Status fillFocal(const fs::path& path, std::optional<double> givenPx, LoadedShot& loaded) {
+Status fillFocal(const fs::path& path, std::optional<double> givenPx, bool assumeFocal, LoadedShot& loaded) {
   metrology::Shot& s = loaded.shot;
   const bool inShot = s.focalPx > 0 || s.focalMm.has_value();
   if (givenPx) {
@@ -112,6 +114,12 @@ Status fillFocal(const fs::path& path, std::optional<double> givenPx, LoadedShot
   std::vector<std::string> notes;
   const std::optional<ExifFocal> exif = exifFocal(tags, swap ? loaded.image.rows : loaded.image.cols,
                                                   swap ? loaded.image.cols : loaded.image.rows, &notes);
+  if (!exif && assumeFocal) {
+    s.focalPx = metrology::kAssumedFocalOverLongSide * std::max(loaded.image.cols, loaded.image.rows);
+    s.focalMm.reset();
+    loaded.focalSource = "assumed: a 28 mm-equivalent lens (0.8 of the long side)";
+    return {};
+  }
   if (!exif) {
     return makeError(path.string() + ": missing field \"focal_px\" (or \"focal_mm\" with \"sensor_width_mm\"), and the photo " +
                      s.imagePath + " has no EXIF focal length" + (notes.empty() ? "" : " (" + notes.front() + ")"));
@@ -129,7 +137,7 @@ constexpr const char* kShotFields[] = {"image",           "image_size",      "fo
                                        "sensor_width_mm", "principal_point", "camera_height_m", "corners_px",
                                        "reference",       "distortion"};
 
-Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
+Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bool allowNoScale) {
   const std::string where = path.string();
   auto text = readFile(path);
   if (!text) return text.error();
@@ -249,7 +257,7 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
     shot.imageWidth = size[0].get<int>();
     shot.imageHeight = size[1].get<int>();
   }
-  if (!shot.cameraHeightM && !shot.reference) {
+  if (!shot.cameraHeightM && !shot.reference && !allowNoScale) {
     return makeError(where + ": give camera_height_m or a reference length; without one the scale is unknown");
   }
   if (otherFields) {
@@ -259,9 +267,9 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields) {
   return shot;
 }
 
-Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx) {
+Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx, bool assumeFocal) {
   json otherFields;
-  auto shot = readShotFile(path, &otherFields);
+  auto shot = readShotFile(path, &otherFields, assumeFocal);
   if (!shot) return shot.error();
   LoadedShot loaded{std::move(*shot), {}, std::move(otherFields), {}};
   metrology::Shot& s = loaded.shot;
@@ -291,7 +299,7 @@ Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx)
   }
   s.imageWidth = loaded.image.cols;
   s.imageHeight = loaded.image.rows;
-  PW_TRY(fillFocal(path, focalPx, loaded));
+  PW_TRY(fillFocal(path, focalPx, assumeFocal, loaded));
   if (s.focalMm) s.focalPx = s.focalMm->pixels(s.imageWidth);
   for (int i = 0; i < kCornerCount; ++i) {
     const glm::dvec2 p = s.cornersPx[i];
@@ -384,7 +392,8 @@ bool allFinite(const ordered_json& j) {
 
 }  // namespace
 
-Result<std::string> measurementJson(const metrology::Measurement& m, const std::string& focalSource) {
+Result<std::string> measurementJson(const metrology::Measurement& m, const std::string& focalSource,
+                                    const std::vector<std::string>& assumptions) {
   using namespace metrology;
   ordered_json out;
   out["method"] = methodName(m.method);
@@ -393,6 +402,33 @@ Result<std::string> measurementJson(const metrology::Measurement& m, const std::
   out["length_m"] = m.size.lengthM;
   out["sigma_m"] = {{"width_m", m.sigma.widthM}, {"height_m", m.sigma.heightM}, {"length_m", m.sigma.lengthM}};
   out["sigma_corner_px"] = m.cornerSigmaPx;
+  {
+    // Each source's own sigma and its share of the variance; the one with the most.
+    const char* const keys[3] = {"width_m", "height_m", "length_m"};
+    ordered_json sources = ordered_json::array();
+    for (const SigmaSource& source : m.sigmaSources) {
+      ordered_json entry = {{"source", source.key}, {"name", source.name}};
+      ordered_json sigma = ordered_json::object(), share = ordered_json::object();
+      for (int d = 0; d < 3; ++d) {
+        const double s = dimensionOf(source.sigma, d), total = dimensionOf(m.sigma, d);
+        sigma[keys[d]] = s;
+        share[keys[d]] = total > 0 ? s * s / (total * total) : 0.0;
+      }
+      entry["sigma_m"] = sigma;
+      entry["share"] = share;
+      sources.push_back(entry);
+    }
+    out["sigma_sources"] = sources;
+    ordered_json mostly = ordered_json::object(), text = ordered_json::object();
+    for (int d = 0; d < 3; ++d) {
+      const SigmaSource* top = dominantSigmaSource(m, d);
+      mostly[keys[d]] = top ? top->key : "corners";
+      text[keys[d]] = dimensionWithSource(m, d);
+    }
+    out["sigma_mostly"] = mostly;
+    out["text"] = text;
+  }
+  if (!assumptions.empty()) out["assumptions"] = assumptions;
   out["vanishing_point_px"] = vec(m.vanishing.corridor.px);
   out["vanishing_residual_px"] = m.vanishing.corridor.residualPx;
   out["horizontal_vanishing_point"] = vanishingJson(m.vanishing.horizontal);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core/mat.hpp>
@@ -22,13 +23,18 @@ namespace pw::modeling {
 // takes it from the photo's EXIF).
 // `otherFields` (may be null) receives the fields photowalk does not read (a JSON
 // object), so that a shot written back keeps them.
-Result<metrology::Shot> readShotFile(const std::filesystem::path& path, nlohmann::json* otherFields = nullptr);
+// `allowNoScale`: a shot without camera_height_m and reference is read (the caller
+// assumes a height; measure --assume-defaults), else refused.
+Result<metrology::Shot> readShotFile(const std::filesystem::path& path, nlohmann::json* otherFields = nullptr,
+                                     bool allowNoScale = false);
 
 // Reads the shot file and its image (BGR, 8 bit), filling imageWidth/imageHeight and
 // checking the corners against the image size. The focal length is `focalPx` when
 // given (the command line's), else the shot's, else the photo's EXIF (exif.h's
 // exifFocal: FocalLength with FocalPlaneXResolution, or FocalLengthIn35mmFilm); with
-// none of them it is an error.
+// none of them it is an error, unless `assumeFocal`: then a 28 mm-equivalent lens
+// (input_sigma.h's kAssumedFocalOverLongSide), focalSource "assumed: ...", and a shot
+// without a camera height or reference length is read too (readShotFile's allowNoScale).
 struct LoadedShot {
   metrology::Shot shot;
   cv::Mat image;
@@ -37,7 +43,8 @@ struct LoadedShot {
   // "shot" when it has none), or the EXIF's line ("EXIF FocalLength 4.20 mm with ...").
   std::string focalSource;
 };
-Result<LoadedShot> loadShot(const std::filesystem::path& path, std::optional<double> focalPx = std::nullopt);
+Result<LoadedShot> loadShot(const std::filesystem::path& path, std::optional<double> focalPx = std::nullopt,
+                            bool assumeFocal = false);
 
 // Writes a shot file atomically: `otherFields` (a JSON object, e.g. LoadedShot's) and
 // the shot's own fields, which replace any of the same name. The image path is
@@ -60,7 +67,12 @@ bool isVanishingPointsOnly(const nlohmann::json& doc);
 // yaw_deg, pitch_deg, roll_deg, position_m, world_from_camera, sigma}, horizon,
 // reprojection_rms_px, corners_m, reprojected_px, reference (when given); the camera's
 // focal_source when `focalSource` is not empty (LoadedShot's), its distortion {k1, k2,
-// source} when it has one. Fails rather than print a NaN or infinity.
-Result<std::string> measurementJson(const metrology::Measurement& measurement, const std::string& focalSource = "");
+// source} when it has one; sigma_sources [{source, name, sigma_m {width_m, height_m,
+// length_m}, share {...: the source's part of the variance}}], sigma_mostly {width_m:
+// the source with the largest share, ...}, text {width_m: "2.6 m ± 0.3 (mostly: the
+// assumed focal length)", ...}, and `assumptions` (what was assumed for a missing
+// input) when not empty. Fails rather than print a NaN or infinity.
+Result<std::string> measurementJson(const metrology::Measurement& measurement, const std::string& focalSource = "",
+                                    const std::vector<std::string>& assumptions = {});
 
 }  // namespace pw::modeling

@@ -102,7 +102,7 @@ void Building::remeasure(const Document* lentShot) {
     if (!doc) continue;
     if (slot.measuredShot && sameShot(*slot.measuredShot, doc->shot())) continue;
     slot.measuredShot = doc->shot();
-    LiveMeasurement live = measureLive(doc->shot());
+    LiveMeasurement live = measureLive(doc->shot(), doc->inputOrigins());
     slot.measurement = live.measurement;
     if (live.measurement) {
       slot.box = live.measurement->size;

@@ -294,6 +294,13 @@ std::string Document::focalSource() const {
   return "set in the editor";
 }
 
+metrology::InputOrigins Document::inputOrigins() const {
+  metrology::InputOrigins origins;
+  origins.focal = metrology::focalOriginOf(focalSource());
+  origins.cameraHeightAssumed = !fromFile_ && shot_.cameraHeightM && *shot_.cameraHeightM == kDefaultCameraHeightM;
+  return origins;
+}
+
 nlohmann::json Document::fieldsToWrite() const {
   nlohmann::json fields = otherFields_;
   const bool asInTheFile = fromFile_ && sameFocal(shot_.focalPx, shot_.focalMm, openedFocalPx_, openedFocalMm_);

@@ -18,6 +18,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
+#include "metrology/input_sigma.h"
 #include "metrology/shot.h"
 #include "modeling/exif.h"
 
@@ -93,6 +94,10 @@ class Document {
   // file's own focal_source (or "the shot file") while unchanged, else "set in the
   // editor". Save writes it as the shot file's "focal_source" (unless it is the file's).
   std::string focalSource() const;
+  // Where the focal length and the camera height came from, for the measurement's ±
+  // (metrology/input_sigma.h): the camera height is assumed while a photo opened
+  // without a shot file keeps kDefaultCameraHeightM.
+  metrology::InputOrigins inputOrigins() const;
 
   // Fits the eight corners, from where they are now, to the photo's edges and
   // vanishing points (metrology/detect's hint: each side looked for within

@@ -436,7 +436,7 @@ void EditMode::remeasure() {
   }
   if (measuredShot_ && sameShot(*measuredShot_, doc_->shot())) return;
   measuredShot_ = doc_->shot();
-  live_ = measureLive(*measuredShot_, lastMoved_);
+  live_ = measureLive(*measuredShot_, doc_->inputOrigins(), lastMoved_);
 }
 
 void EditMode::update(app::Shell& shell, double stepS) {
@@ -483,7 +483,16 @@ void EditMode::traceRow(app::TraceRow& row) const {
   row.add("snap_px", snap ? pair(*snap) : ordered_json(nullptr));
   if (live_.measurement) {
     const metrology::Dimensions& size = live_.measurement->size;
-    row.add("measurement", ordered_json{{"width_m", size.widthM}, {"height_m", size.heightM}, {"length_m", size.lengthM}});
+    const metrology::Dimensions& sigma = live_.measurement->sigma;
+    row.add("measurement",
+            ordered_json{{"width_m", size.widthM},
+                         {"height_m", size.heightM},
+                         {"length_m", size.lengthM},
+                         {"sigma_m", {{"width_m", sigma.widthM}, {"height_m", sigma.heightM}, {"length_m", sigma.lengthM}}},
+                         {"text",
+                          {{"width_m", metrology::dimensionWithSource(*live_.measurement, 0)},
+                           {"height_m", metrology::dimensionWithSource(*live_.measurement, 1)},
+                           {"length_m", metrology::dimensionWithSource(*live_.measurement, 2)}}}});
   } else {
     row.add("measurement", ordered_json(nullptr));
   }

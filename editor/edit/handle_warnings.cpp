@@ -50,11 +50,12 @@ std::string format(const char* fmt, auto... args) {
 std::pair<std::string, double> affectedDimension(int plane, const metrology::Measurement* m) {
   if (!m) return {"", 0};
   const auto relative = [](double sigma, double value) { return value > 0 ? sigma / value : 0.0; };
+  const metrology::Dimensions sigma = metrology::cornerSigma(*m);  // what moving corners changes
   if (plane == static_cast<int>(Plane::kFarWall)) {
-    const double w = relative(m->sigma.widthM, m->size.widthM), h = relative(m->sigma.heightM, m->size.heightM);
+    const double w = relative(sigma.widthM, m->size.widthM), h = relative(sigma.heightM, m->size.heightM);
     return w >= h ? std::pair<std::string, double>{"width", w} : std::pair<std::string, double>{"height", h};
   }
-  return {"length", relative(m->sigma.lengthM, m->size.lengthM)};
+  return {"length", relative(sigma.lengthM, m->size.lengthM)};
 }
 
 // Corners at one point (closer than kCoincidentPx), grouped: one warning per group.

@@ -7,11 +7,11 @@
 
 namespace pw::edit {
 
-LiveMeasurement measureLive(const metrology::Shot& shot, int moved) {
+LiveMeasurement measureLive(const metrology::Shot& shot, const metrology::InputOrigins& origins, int moved) {
   LiveMeasurement live;
   try {
     if (auto vanishing = metrology::corridorVanishing(shot.cornersPx)) live.vanishing = *vanishing;
-    auto measured = metrology::measureCorridor(shot);
+    auto measured = metrology::measureCorridor(shot, metrology::withInputSigmas({}, shot, origins));
     if (measured) {
       live.measurement = std::move(*measured);
       int culprit = -1;

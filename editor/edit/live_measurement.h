@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "editor/edit/handle_warnings.h"
+#include "metrology/input_sigma.h"
 #include "metrology/measure.h"
 #include "metrology/shot.h"
 #include "metrology/vanishing.h"
@@ -22,8 +23,10 @@ struct LiveMeasurement {
   std::vector<HandleWarning> handleWarnings;  // handle_warnings.h: on the handles and in words
 };
 
-// Never throws, whatever the corners: a failure is `error`. `moved`: the corner the
-// person moved last (P1..P8, or -1), which the warnings name as the one to move back.
-LiveMeasurement measureLive(const metrology::Shot& shot, int moved = -1);
+// Never throws, whatever the corners: a failure is `error`.
+// The measurement's ± carries the inputs by `origins` (metrology/input_sigma.h).
+// `moved`: the corner the person moved last (P1..P8, or -1), which the warnings name as
+// the one to move back.
+LiveMeasurement measureLive(const metrology::Shot& shot, const metrology::InputOrigins& origins = {}, int moved = -1);
 
 }  // namespace pw::edit

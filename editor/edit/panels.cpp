@@ -163,10 +163,10 @@ void EditMode::drawMeasurement() {
     return;
   }
   const metrology::Measurement& m = *live_.measurement;
-  ImGui::Text("width   %7.3f m  +- %.3f", m.size.widthM, m.sigma.widthM);
-  ImGui::Text("height  %7.3f m  +- %.3f", m.size.heightM, m.sigma.heightM);
-  ImGui::Text("length  %7.3f m  +- %.3f", m.size.lengthM, m.sigma.lengthM);
-  ImGui::TextDisabled("(+- one sigma at %.1f px per corner)", m.cornerSigmaPx);
+  wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "width   " + metrology::dimensionWithSource(m, 0));
+  wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "height  " + metrology::dimensionWithSource(m, 1));
+  wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "length  " + metrology::dimensionWithSource(m, 2));
+  ImGui::TextDisabled("(\xc2\xb1 one sigma of every input)");
   const metrology::VanishingPoint& vp = m.vanishing.corridor;
   ImGui::Text("vanishing point (%.1f, %.1f) px", vp.px.x, vp.px.y);
   ImGui::Text("  residual %.2f px", vp.residualPx);

@@ -11,14 +11,17 @@ std::vector<std::string> measurementWarnings(const metrology::Shot& shot, const 
   std::vector<std::string> out;
   if (culpritCorner) *culpritCorner = -1;
   char line[256];
+  // The corners' share only: the advice is where to put them (the focal length's and
+  // the camera height's shares are said beside each dimension).
+  const metrology::Dimensions sigma = metrology::cornerSigma(m);
   const struct {
     const char* name;
     double value, sigma;
     const char* advice;
   } dims[] = {
-      {"width", m.size.widthM, m.sigma.widthM, "place P5/P6 and P7/P8 farther apart, or more precisely"},
-      {"height", m.size.heightM, m.sigma.heightM, "place P5/P7 and P6/P8 farther apart, or more precisely"},
-      {"length", m.size.lengthM, m.sigma.lengthM,
+      {"width", m.size.widthM, sigma.widthM, "place P5/P6 and P7/P8 farther apart, or more precisely"},
+      {"height", m.size.heightM, sigma.heightM, "place P5/P7 and P6/P8 farther apart, or more precisely"},
+      {"length", m.size.lengthM, sigma.lengthM,
        "the near corners P5..P8 are too close to the far wall's lines; place them nearer the camera, or more "
        "precisely"},
   };

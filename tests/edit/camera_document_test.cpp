@@ -137,6 +137,17 @@ TEST(CameraDocument, APhotoWithoutExifSaysItsFocalLengthIsTheDefault) {
   // 819.2 px here, where the EXIF above gave the camera's 803.68 px.
   EXPECT_EQ(doc->focalSource(), "default: a 28 mm-equivalent lens");
   EXPECT_NEAR(doc->shot().focalPx, 0.8 * 1024, 1e-9);
+  // The measurement's ± carries both assumptions until they are set (issue 23).
+  metrology::InputOrigins origins = doc->inputOrigins();
+  EXPECT_EQ(origins.focal, metrology::FocalOrigin::kAssumed);
+  EXPECT_TRUE(origins.cameraHeightAssumed);
+  metrology::Shot set = doc->shot();
+  set.focalPx = 803.68;
+  set.cameraHeightM = 1.5;
+  doc->apply(set, "camera");
+  origins = doc->inputOrigins();
+  EXPECT_EQ(origins.focal, metrology::FocalOrigin::kGiven) << doc->focalSource();
+  EXPECT_FALSE(origins.cameraHeightAssumed);
 }
 
 }  // namespace

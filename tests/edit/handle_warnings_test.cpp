@@ -126,7 +126,10 @@ TEST(HandleWarnings, AlmostOnALineSaysHowUncertainTheLengthIs) {
   const glm::dvec2 turned(along.x * std::cos(angle) + along.y * std::sin(angle),
                           -along.x * std::sin(angle) + along.y * std::cos(angle));
   shot.cornersPx[P5] = shot.cornersPx[P3] + 1.5 * turned;
-  m.sigma.lengthM = 0.4 * m.size.lengthM;
+  // The corners' share of the sigma is what moving a corner changes (metrology::cornerSigma).
+  ASSERT_FALSE(m.sigmaSources.empty());
+  ASSERT_EQ(m.sigmaSources[0].key, "corners");
+  m.sigma.lengthM = m.sigmaSources[0].sigma.lengthM = 0.4 * m.size.lengthM;
   const std::vector<HandleWarning> warnings = handleWarnings(shot, &m);
   const HandleWarning* w = findLabel(warnings, "on P3-P4");
   ASSERT_TRUE(w) << all(warnings);
@@ -135,7 +138,11 @@ TEST(HandleWarnings, AlmostOnALineSaysHowUncertainTheLengthIs) {
   EXPECT_EQ(w->text.rfind("P5 is almost on the line P3-P4 (", 0), 0u) << w->text;
   EXPECT_NE(w->text.find("the length is uncertain to +-40%"), std::string::npos) << w->text;
   // The same corners with a length known to 2%: nothing to act on.
-  m.sigma.lengthM = 0.02 * m.size.lengthM;
+  m.sigma.lengthM = m.sigmaSources[0].sigma.lengthM = 0.02 * m.size.lengthM;
+  EXPECT_FALSE(findLabel(handleWarnings(shot, &m), "on P3-P4")) << all(handleWarnings(shot, &m));
+  // A length uncertain to 40% from an assumed focal length, the corners' share 2%: the
+  // corners are not what to move.
+  m.sigma.lengthM = 0.4 * m.size.lengthM;
   EXPECT_FALSE(findLabel(handleWarnings(shot, &m), "on P3-P4")) << all(handleWarnings(shot, &m));
 }
 
@@ -270,7 +277,7 @@ TEST(HandleWarnings, DegenerateCornerSetsNeverCrashNorPrintNaN) {
 // "P5 is almost on the line P1-P3"; P3 dragged above P1 said "P2 and P4 look swapped").
 // Every warning whose corners include the one moved tells a person to move that one.
 void expectEveryWarningNames(const metrology::Shot& shot, int moved) {
-  const LiveMeasurement live = measureLive(shot, moved);
+  const LiveMeasurement live = measureLive(shot, {}, moved);
   ASSERT_FALSE(live.handleWarnings.empty()) << metrology::cornerName(moved);
   for (const HandleWarning& w : live.handleWarnings) {
     const bool concerns = std::find(w.handles.begin(), w.handles.end(), moved) != w.handles.end() ||
@@ -291,7 +298,7 @@ TEST(HandleWarnings, TheyNameTheCornerThatMoved) {
   metrology::Shot aboveP1 = corridorShot();
   aboveP1.cornersPx[P3] = aboveP1.cornersPx[P1] + glm::dvec2(0, -30);
   expectEveryWarningNames(aboveP1, P3);
-  const LiveMeasurement live = measureLive(aboveP1, P3);
+  const LiveMeasurement live = measureLive(aboveP1, {}, P3);
   const HandleWarning* crossedWarning = findLabel(live.handleWarnings, "crossed");
   ASSERT_TRUE(crossedWarning) << all(live.handleWarnings);
   EXPECT_EQ(crossedWarning->text.find("P2 and P4"), std::string::npos) << crossedWarning->text;

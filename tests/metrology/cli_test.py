@@ -71,6 +71,38 @@ def main():
                 check(abs(doc[key] / truth - 1) < 0.003, "%s %s within 0.3%% (got %s)" % (method, key, doc[key]))
                 check(0 < doc["sigma_m"][key] < 0.05 * truth, "%s sigma of %s is plausible" % (method, key))
 
+        # The ± of every input (issue 23): the shares add up; a shot without a focal
+        # length or camera height is refused, and measured with --assume-defaults, the ±
+        # then mostly the assumed focal length's or camera height's.
+        r = run(exe, "measure", good)
+        doc = json.loads(r.stdout) if r.returncode == 0 else {}
+        sources = doc.get("sigma_sources", [])
+        check(sources and sources[0]["source"] == "corners", "measure prints sigma_sources, the corners first")
+        for key in ("width_m", "height_m", "length_m"):
+            total = sum(s["sigma_m"][key] ** 2 for s in sources) ** 0.5
+            check(abs(total - doc["sigma_m"][key]) < 1e-9, "the sources of %s add up in quadrature" % key)
+            check(abs(sum(s["share"][key] for s in sources) - 1) < 1e-9, "the shares of %s add up to 1" % key)
+            check(" m \u00b1 " in doc.get("text", {}).get(key, ""), "text.%s says the dimension with its ±" % key)
+        bare = dict(base)
+        for key in ("focal_px", "focal_mm", "sensor_width_mm", "camera_height_m", "reference"):
+            bare.pop(key, None)
+        bare_path = os.path.join(tmp, "bare.json")
+        json.dump(bare, open(bare_path, "w"))
+        r = run(exe, "measure", bare_path)
+        check(r.returncode == 1, "measure refuses a shot without focal length or camera height")
+        r = run(exe, "measure", bare_path, "--assume-defaults")
+        check(r.returncode == 0, "measure --assume-defaults measures it (%s)" % r.stderr.strip())
+        if r.returncode == 0:
+            doc = json.loads(r.stdout)
+            check(len(doc.get("assumptions", [])) == 2, "it says both assumptions in the JSON")
+            check(r.stderr.count("measure: assumed") == 2, "and on stderr")
+            check(doc["camera"]["focal_source"].startswith("assumed"), "camera.focal_source says assumed")
+            check(doc["sigma_mostly"]["length_m"] in ("focal_length", "camera_height"),
+                  "the length's sigma is mostly the assumptions' (%s)" % doc["sigma_mostly"]["length_m"])
+            check("(mostly: the assumed" in doc["text"]["length_m"], "text says so: %s" % doc["text"]["length_m"])
+            for key, truth in (("width_m", 4.0), ("height_m", 3.5), ("length_m", 19.0)):
+                check(doc["sigma_m"][key] > 0.05 * truth, "the assumed inputs widen the ± of %s" % key)
+
         # --sheet writes a PNG at least the photo's size.
         sheet = os.path.join(tmp, "sheet.png")
         r = run(exe, "measure", good, "--sheet", sheet)

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "metrology/input_sigma.h"
 #include "metrology/measure.h"
 #include "tests/metrology/synthetic_corridor.h"
 
@@ -242,6 +243,64 @@ TEST(Measure, SigmaScalesWithCornerSigmaAndCameraHeightSigma) {
   EXPECT_NEAR(h->sigma.lengthM, 0.01 * c.lengthM, 1e-6);
   // Farther away is less certain: the length's sigma exceeds the width's.
   EXPECT_GT(a->sigma.lengthM, a->sigma.widthM);
+}
+
+TEST(MeasureSigma, EachInputsShareAddsInQuadrature) {
+  SyntheticCorridor c;
+  c.yawDeg = 8, c.pitchDeg = 4;
+  MeasureOptions options;
+  options.focalSigmaRelative = 0.3;
+  options.focalSigmaName = "the assumed focal length";
+  options.cameraHeightSigmaM = 0.28;
+  options.principalPointSigmaPx = 4;
+  options.distortionSigmaK1 = 0.01;
+  auto m = measureCorridor(c.shot(), options);
+  auto today = measureCorridor(c.shot());
+  ASSERT_TRUE(m.ok() && today.ok());
+  ASSERT_EQ(m->sigmaSources.size(), 5u);
+  EXPECT_EQ(m->sigmaSources[0].key, "corners");
+  for (int d = 0; d < 3; ++d) {
+    double sum = 0;
+    for (const SigmaSource& s : m->sigmaSources) sum += std::pow(dimensionOf(s.sigma, d), 2);
+    EXPECT_NEAR(std::sqrt(sum), dimensionOf(m->sigma, d), 1e-12);
+    // The corners' share is today's sigma; the measurement itself does not move.
+    EXPECT_NEAR(dimensionOf(m->sigmaSources[0].sigma, d), dimensionOf(today->sigma, d), 1e-12);
+    EXPECT_NEAR(dimensionOf(m->size, d), dimensionOf(today->size, d), 1e-12);
+  }
+  // The camera height: proportional (0.28 / 1.5 of each dimension).
+  EXPECT_NEAR(m->sigmaSources[1].sigma.widthM, c.widthM * 0.28 / 1.5, 1e-6);
+  // A 30% focal length dominates the length, which scales with it.
+  const SigmaSource* top = dominantSigmaSource(*m, 2);
+  ASSERT_NE(top, nullptr);
+  EXPECT_EQ(top->key, "focal_length");
+  EXPECT_GT(m->sigmaSources[2].sigma.lengthM, 0.15 * c.lengthM);
+  EXPECT_NE(dimensionWithSource(*m, 2).find("(mostly: the assumed focal length)"), std::string::npos);
+}
+
+TEST(MeasureSigma, FocalLengthsWeighedByInverseVariance) {
+  // Equal sigmas: the geometric mean, sigma / sqrt(2).
+  WeighedFocal w = weighFocal(600, 0.03, 630, 0.03);
+  EXPECT_TRUE(w.usedSecond);
+  EXPECT_NEAR(w.focalPx, std::sqrt(600.0 * 630.0), 1e-9);
+  EXPECT_NEAR(w.sigmaRelative, 0.03 / std::sqrt(2.0), 1e-12);
+  // A second estimate four times as uncertain moves the first by a seventeenth.
+  w = weighFocal(647, 0.03, 700, 0.12);
+  EXPECT_NEAR(std::log(w.focalPx / 647), std::log(700.0 / 647) / 17, 1e-12);
+  // Beyond 2 sigma of their difference: the first alone.
+  w = weighFocal(647, 0.03, 500, 0.10);
+  EXPECT_FALSE(w.usedSecond);
+  EXPECT_EQ(w.focalPx, 647);
+  EXPECT_EQ(w.sigmaRelative, 0.03);
+}
+
+TEST(MeasureSigma, DigitsFollowTheSigma) {
+  EXPECT_EQ(dimensionText(2.5634, 0.3, "+/-"), "2.6 m +/- 0.3");
+  EXPECT_EQ(dimensionText(2.5634, 0.015, "+/-"), "2.563 m +/- 0.015");
+  EXPECT_EQ(dimensionText(2.5634, 0.04, "+/-"), "2.56 m +/- 0.04");
+  EXPECT_EQ(dimensionText(12.34, 1.2, "+/-"), "12.3 m +/- 1.2");
+  EXPECT_EQ(dimensionText(12.34, 4.0, "+/-"), "12 m +/- 4");
+  EXPECT_EQ(dimensionText(2.5634, 0.0001, "+/-"), "2.563 m +/- 0.000");
+  EXPECT_EQ(dimensionText(2.5634, 0.3), "2.6 m \u00b1 0.3");
 }
 
 TEST(Measure, HorizonOfTheFittedCameraPassesThroughTheVanishingPoint) {
