@@ -23,7 +23,7 @@ using metrology::detect::CorridorDetection;
 
 constexpr const char* kUsage =
     "usage: photowalk detect PHOTO -o SHOT.json [--focal-px F] [--principal-point U,V]\n"
-    "                        [--camera-height H] [--near-at-image-edge] [--overlay OUT.png]\n"
+    "                        [--camera-height H] [--near-at-marked] [--overlay OUT.png]\n"
     "       photowalk detect --hint ROUGH.json -o SHOT.json [--hint-reach PX] [--overlay OUT.png]\n\n"
     "Finds the corridor in the photo: its vanishing points (the Manhattan frame), the\n"
     "four receding floor and ceiling edges, the far wall's corners P1..P4 and the near\n"
@@ -42,8 +42,12 @@ constexpr const char* kUsage =
     "  --principal-point U,V   in pixels (default: the image centre)\n"
     "  --camera-height H       camera height above the floor, metres (measure needs it,\n"
     "                          or a reference length added in the editor)\n"
-    "  --near-at-image-edge    put P5..P8 at the nearest depth where all four stay inside\n"
-    "                          the photo even when a band or frame marks a cross-section\n"
+    "  --near-at-marked        put P5..P8 on a band or frame marking a cross-section\n"
+    "                          across the corridor, when one is found; by default they\n"
+    "                          go to the nearest depth where all four stay inside the\n"
+    "                          photo (the shot's detection.near_depth says which:\n"
+    "                          image_edge or marked_cross_section; --near-at-image-edge,\n"
+    "                          now the default, is still accepted)\n"
     "  --overlay OUT.png       also draw what was found on the photo (corners ringed by\n"
     "                          confidence: green >= 0.7, amber >= 0.4, red below)\n"
     "  --hint ROUGH.json       a shot whose corners a person placed roughly (within 10-20\n"
@@ -138,7 +142,8 @@ int runDetect(Args& args) {
   const std::optional<std::string> hintPath = args.value("--hint");
   const std::optional<std::string> hintReach = args.value("--hint-reach");
   metrology::detect::DetectOptions options;
-  options.nearAtImageEdge = args.flag("--near-at-image-edge");
+  options.nearAtMarkedCrossSection = args.flag("--near-at-marked");
+  if (args.flag("--near-at-image-edge")) options.nearAtMarkedCrossSection = false;
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (hintPath ? positionals.size() > 1 : positionals.size() != 1) {

@@ -39,9 +39,13 @@ struct DetectOptions {
   std::optional<double> focalPx;               // withheld: estimated, else a default with a warning
   std::optional<glm::dvec2> principalPointPx;  // default: the image centre ((w-1)/2, (h-1)/2)
   int workingMaxSidePx = 1280;                 // detection runs on a copy no larger than this
-  // P5..P8 at the nearest depth where all four stay inside the image, even when a
-  // marked cross-section (a band or frame across the corridor) is found.
-  bool nearAtImageEdge = false;
+  // P5..P8 on a marked cross-section (a band painted or a frame built across the
+  // corridor, looked for between the far wall and the camera) when one is found. Off by
+  // default: real corridors have no such band, and a door frame, a lamp's light or a
+  // change of floor tiles passes for one (P5..P8 then a metre before the far wall);
+  // P5..P8 then go to the nearest cross-section whose four corners lie inside the
+  // photo (near_depth image_edge), as ../shared/METHOD.md's convention has it.
+  bool nearAtMarkedCrossSection = false;
   // Fit the lens's radial distortion to the photo's straight lines (distortion.h) and,
   // when they show one, detect on the photo undistorted.
   bool estimateDistortion = true;

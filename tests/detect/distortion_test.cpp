@@ -100,6 +100,7 @@ TEST_P(DistortedGroundTruth, DetectFindsTheLensAndMeasuresWithinHalfAPercent) {
   DetectOptions options;
   options.focalPx = t.answers.focalPx;
   options.principalPointPx = t.answers.principalPointPx;
+  options.nearAtMarkedCrossSection = true;  // length to the painted band, as the answers have it
   const auto measureDetected = [&](const DetectOptions& o, Errors& errors, RadialDistortion& lens) -> bool {
     auto d = detectCorridor(photo, o);
     EXPECT_TRUE(d.ok()) << d.message();
@@ -147,6 +148,7 @@ TEST(DistortedGroundTruth, ALargePhotoThroughTheLensMeasuresAsTheSmallOne) {
     DetectOptions options;
     options.focalPx = kScale * t.answers.focalPx;
     options.principalPointPx = toLarge(t.answers.principalPointPx);
+    options.nearAtMarkedCrossSection = true;
     auto d = detectCorridor(large, options);
     ASSERT_TRUE(d.ok()) << d.message();
     ASSERT_TRUE(d->found) << name;
@@ -177,6 +179,7 @@ TEST(UndistortedGroundTruth, DetectFindsNoLensDistortion) {
       DetectOptions options;
       if (focalGiven) options.focalPx = g.focalPx;
       options.principalPointPx = g.principalPointPx;
+      options.nearAtMarkedCrossSection = true;
       auto d = detectCorridor(photo, options);
       ASSERT_TRUE(d.ok()) << d.message();
       EXPECT_TRUE(d->distortion.isNone()) << g.name << (focalGiven ? "" : " (focal withheld)") << ": k1 " << d->distortion.k1
@@ -193,7 +196,7 @@ TEST(DistortionCommands, DetectWritesTheLensAndMeasureUsesIt) {
   fs::create_directories(dir);
   const std::string photowalk = (fs::path(PW_BINARY_DIR) / "photowalk").string();
   const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_f");
-  const std::string given = " --focal-px " + std::to_string(truth.focalPx) + " --camera-height 1.55 -o ";
+  const std::string given = " --focal-px " + std::to_string(truth.focalPx) + " --near-at-marked --camera-height 1.55 -o ";
   const auto slurp = [](const fs::path& path) {
     std::ifstream in(path);
     return nlohmann::json::parse(in, nullptr, false);
@@ -291,7 +294,7 @@ TEST_F(ExifFocalLength, MeasureTakesItWhenTheShotGivesNone) {
 TEST_F(ExifFocalLength, DetectThenMeasureWithNoFocalLengthGiven) {
   const fs::path shot = dir_ / "detected.json";
   const test::CommandRun detect = test::runCommand((fs::path(PW_BINARY_DIR) / "photowalk").string() + " detect " +
-                                                   jpeg_.string() + " --camera-height " +
+                                                   jpeg_.string() + " --near-at-marked --camera-height " +
                                                    std::to_string(truth_.cameraHeightM) + " -o " + shot.string());
   ASSERT_EQ(detect.exitCode, 0) << detect.output;
   expectWithinHalfAPercent(photowalk("measure " + shot.string()), "detect then measure");
