@@ -1,5 +1,7 @@
 #include "base/atomic_file.h"
 
+#include "base/input_file.h"
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -57,16 +59,6 @@ Status writeFileAtomic(const fs::path& path, const std::string& text) {
   return writeFileAtomic(path, std::span<const char>(text.data(), text.size()));
 }
 
-Result<std::string> readFile(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return makeError(path.string() + ": no such file");
-  if (fs::is_directory(path, ec)) return makeError(path.string() + ": is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(path.string() + ": cannot read: " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) return makeError(path.string() + ": read failed");
-  return buffer.str();
-}
+Result<std::string> readFile(const fs::path& path) { return readInputFile(path, kAnyInput); }
 
 }  // namespace pw

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "editor/cli/command.h"
+#include "modeling/layout.h"
 #include "modeling/pipeline.h"
+#include "modeling/shot_file.h"
 #include "engine/gltf/gltf_writer.h"
 #include "engine/vrml/vrml_writer.h"
 
@@ -34,6 +36,9 @@ constexpr const char* kUsage =
     "  --no-detail           synthesize what the photo did not see, but add no detail where\n"
     "                        it saw a surface coarsely\n"
     "  --jpeg                textures as JPEG instead of PNG\n"
+    "  --force               replace files beside OUT.wrl that have a texture's name but\n"
+    "                        that the model there does not name (by default such a texture\n"
+    "                        gets a free name: OUT_s_floor_2.png)\n"
     "  --sigma-px S          corner standard deviation for the printed ± (default 1)\n";
 
 bool endsWith(const std::string& s, const std::string& suffix) {
@@ -74,6 +79,7 @@ int runBuild(Args& args) {
   options.detail = !args.flag("--no-detail");
   engine::VrmlWriteOptions vrmlOptions;
   vrmlOptions.jpegTextures = args.flag("--jpeg");
+  vrmlOptions.overwriteForeignFiles = args.flag("--force");
   const std::vector<std::string> shots = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (!output) return fail("build needs -o OUT.wrl");
@@ -103,6 +109,18 @@ int runBuild(Args& args) {
     layout = std::move(*read);
   } else {
     layout = modeling::chainLayout(std::vector<fs::path>(shots.begin(), shots.end()));
+  }
+
+  // Never over an input: the layout, a shot or a shot's photo.
+  std::vector<NamedInput> inputs;
+  if (layoutPath) inputs.push_back({"the layout", *layoutPath});
+  for (const modeling::LayoutEntry& entry : layout.corridors) {
+    inputs.push_back({"a shot", entry.shot.string()});
+    if (auto shot = modeling::readShotFile(entry.shot); shot) inputs.push_back({"a shot's photo", shot->imagePath});
+  }
+  if (auto distinct = checkNotAnInput(*output, "-o", inputs); !distinct) return fail(distinct.message());
+  if (gltfPath) {
+    if (auto distinct = checkNotAnInput(*gltfPath, "--gltf", inputs); !distinct) return fail(distinct.message());
   }
 
   auto model = modeling::buildModel(layout, options, measureOptions);

@@ -77,6 +77,14 @@ int runMeasure(Args& args) {
 
   auto loaded = modeling::loadShot(shotPath, focalPx);
   if (!loaded) return fail(loaded.message());
+  if (sheetPath) {
+    if (auto image = checkImageExtension(*sheetPath, "--sheet"); !image) return fail(image.message());
+    if (auto distinct = checkNotAnInput(*sheetPath, "--sheet",
+                                        {{"the shot", shotPath}, {"the shot's photo", loaded->shot.imagePath}});
+        !distinct) {
+      return fail(distinct.message());
+    }
+  }
   auto measurement = metrology::measureCorridor(loaded->shot, *options);
   if (!measurement) return fail(shotPath + ": " + measurement.message());
   auto text = modeling::measurementJson(*measurement, loaded->focalSource);

@@ -36,7 +36,9 @@ constexpr const char* kUsage =
     "  --size WxH         frame size in pixels (default 1280x720)\n"
     "  --video OUT.mp4    also write a video (MPEG-4; .avi for Motion JPEG)\n"
     "  --fps F            video frame rate (default 30)\n"
-    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n\n"
+    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n"
+    "  --allow-folder DIR let the model's Inlines and textures come from DIR too (by\n"
+    "                     default only from the model's own folder; repeatable)\n\n"
     "With Vulkan validation on (PW_VALIDATION=1, or a Debug build) any validation message\n"
     "fails the command (exit 1): the frames drawn before it stay, later frames and the\n"
     "video are not written.\n";
@@ -155,6 +157,7 @@ int runTour(Args& args) {
   const auto sizeText = args.value("--size");
   const auto videoPath = args.value("--video");
   const auto fpsText = args.value("--fps");
+  const std::vector<std::string> allowed = args.values("--allow-folder");
   engine::RendererOptions options;
   options.forceCpu = args.flag("--cpu");
   const std::vector<std::string> positionals = args.positionals();
@@ -183,9 +186,14 @@ int runTour(Args& args) {
     fps = *parsed;
   }
 
+  if (videoPath) {
+    if (auto distinct = checkNotAnInput(*videoPath, "--video", {{"the model", positionals[0]}}); !distinct) {
+      return fail(distinct.message());
+    }
+  }
   std::vector<std::string> warnings;
-  auto scene = engine::loadModel(positionals[0], &warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  auto scene = engine::loadModel(positionals[0], &warnings, std::vector<fs::path>(allowed.begin(), allowed.end()));
+  for (const std::string& w : warnings) printWarning(w);
   if (!scene) return fail(scene.message());
 
   std::vector<engine::Camera> cameras;
@@ -215,8 +223,7 @@ int runTour(Args& args) {
     video.open(videoTemp.string(), cv::VideoWriter::fourcc(avi ? 'M' : 'm', avi ? 'J' : 'p', avi ? 'P' : '4', avi ? 'G' : 'v'),
                fps, {size.first, size.second});
     if (!video.isOpened()) {
-      std::fprintf(stderr, "warning: %s: this OpenCV cannot write that video format; writing frames only\n",
-                   videoPath->c_str());
+      printWarning(*videoPath + ": this OpenCV cannot write that video format; writing frames only");
     }
   }
 

@@ -19,6 +19,10 @@ namespace pw::engine {
 struct VrmlWriteOptions {
   bool jpegTextures = false;  // write textures as JPEG (quality 92) instead of PNG
   std::string title;          // WorldInfo title; empty: the scene's own title
+  // A texture's file name taken by a file the model now at `out` does not name (a
+  // person's own m_s_floor.png) is not written over: the texture gets a free name
+  // (m_s_floor_2.png). True (build --force): such files are replaced.
+  bool overwriteForeignFiles = false;
 };
 
 // Writes `out` (.wrl, or gzip-compressed when it ends in .gz or .wrz) atomically, and
