@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/staging.h"
 #include "editor/cli/command.h"
 #include "modeling/layout.h"
 #include "modeling/pipeline.h"
@@ -128,21 +129,41 @@ int runBuild(Args& args) {
 
   // Everything that can fail on the input has failed by now; write the files, into
   // folders made for them if need be (as tour does).
+  // The glTF is written under a pending name and takes its own only once the VRML
+  // model is in place: a failed build leaves the previous .glb and .wrl as they were.
   std::vector<fs::path> created = createFoldersFor(*output);
+  fs::path pendingGltf;
   if (gltfPath) {
     const std::vector<fs::path> forGltf = createFoldersFor(*gltfPath);
     created.insert(created.end(), forGltf.begin(), forGltf.end());
-    if (auto written = engine::writeGltf(model->scene, *gltfPath); !written) {
+    const fs::path target(*gltfPath);
+    const std::string prefix = "." + target.stem().string() + ".pending-";
+    removeStaleTemporaries(target.parent_path(), prefix);
+    pendingGltf = target.parent_path() / (prefix + processIdText() + target.extension().string());
+    if (auto written = engine::writeGltf(model->scene, pendingGltf); !written) {
+      std::error_code ec;
+      fs::remove(pendingGltf, ec);
       removeFolders(created);
-      return fail(written.message());
+      std::string message = written.message();
+      if (const size_t at = message.find(pendingGltf.string()); at != std::string::npos) {
+        message.replace(at, pendingGltf.string().size(), *gltfPath);
+      }
+      return fail(message);
     }
   }
   if (auto written = engine::writeVrml(model->scene, *output, vrmlOptions); !written) {
-    // No half of a model: the glTF written a moment ago goes too, and the folders made.
     std::error_code ec;
-    if (gltfPath) fs::remove(*gltfPath, ec);
+    if (gltfPath) fs::remove(pendingGltf, ec);
     removeFolders(created);
     return fail(written.message());
+  }
+  if (gltfPath) {
+    std::error_code ec;
+    fs::rename(pendingGltf, *gltfPath, ec);
+    if (ec) {
+      fs::remove(pendingGltf, ec);
+      return fail(*gltfPath + ": cannot write: " + ec.message() + " (" + *output + " was written)");
+    }
   }
 
   for (const modeling::CorridorModel& corridor : model->corridors) {

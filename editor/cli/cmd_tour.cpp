@@ -16,6 +16,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "base/atomic_file.h"
+#include "base/staging.h"
 #include "editor/cli/command.h"
 #include "engine/io/model_io.h"
 #include "modeling/tour.h"
@@ -219,7 +220,11 @@ int runTour(Args& args) {
   if (videoPath) {
     const fs::path target(*videoPath);
     const bool avi = target.extension() == ".avi";
-    videoTemp = target.parent_path() / ("." + target.stem().string() + ".partial" + target.extension().string());
+    // A name of this process's own (two tours to one --video do not share it); what a
+    // killed tour left is removed first.
+    const std::string prefix = "." + target.stem().string() + ".partial-";
+    removeStaleTemporaries(target.parent_path(), prefix);
+    videoTemp = target.parent_path() / (prefix + processIdText() + target.extension().string());
     video.open(videoTemp.string(), cv::VideoWriter::fourcc(avi ? 'M' : 'm', avi ? 'J' : 'p', avi ? 'P' : '4', avi ? 'G' : 'v'),
                fps, {size.first, size.second});
     if (!video.isOpened()) {
@@ -253,6 +258,18 @@ int runTour(Args& args) {
   std::printf("%d frames of %dx%d in %s\n", frames, size.first, size.second, output->c_str());
   if (video.isOpened()) {
     video.release();
+    // OpenCV's writer says nothing when the disk fills: read the video back, and keep
+    // the previous one unless every frame is there.
+    cv::VideoCapture check(videoTemp.string());
+    const bool readable = check.isOpened();
+    const double written = readable ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0;
+    check.release();
+    const auto bytes = fs::file_size(videoTemp, ec);
+    if (!readable || ec || bytes == 0 || (written > 0 && written < frames)) {
+      fs::remove(videoTemp, ec);
+      return fail(*videoPath + ": the video is incomplete (" + std::to_string(static_cast<long long>(written)) + " of " +
+                  std::to_string(frames) + " frames could be read back; disk full?); the frames are in " + *output);
+    }
     fs::rename(videoTemp, *videoPath, ec);
     if (ec) return fail(*videoPath + ": cannot write: " + ec.message());
     std::printf("video: %s (%.0f fps)\n", videoPath->c_str(), fps);

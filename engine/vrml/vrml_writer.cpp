@@ -7,6 +7,7 @@
 
 #include "base/atomic_file.h"
 #include "base/input_file.h"
+#include "base/staging.h"
 #include "engine/scene/model_info.h"
 #include "engine/scene/texture_detail.h"
 #include "engine/vrml/gzip.h"
@@ -561,24 +562,24 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     if (!compressed) return makeError(out.string() + ": " + compressed.message());
     text = std::move(*compressed);
   }
-  // The textures go first, the model that names them last. When a texture or the model
-  // cannot be written, the textures this call created are removed again, so that a
-  // failed write leaves no part of a model behind (one that was there before stays).
-  std::vector<fs::path> created;
-  const auto undo = [&](Status failed) {
-    std::error_code ec;
-    for (const fs::path& path : created) fs::remove(path, ec);
-    return failed;
-  };
+  // The model and its textures are written into a hidden folder beside `out` and moved
+  // into place only when all are whole, the textures first, the model that names them
+  // last: a failed (or killed) write leaves the previous model as it was, and the next
+  // write removes what a killed one left (base/staging.h).
+  auto staged = StagedFiles::create(out.parent_path(), name);
+  if (!staged) return makeError(out.string() + ": " + staged.message());
+  std::vector<std::string> order;
   for (const auto& [image, file] : urls) {
-    const fs::path path = out.parent_path() / file;
-    std::error_code ec;
-    const bool existed = fs::exists(path, ec);
-    if (Status saved = saveImage(path, *image); !saved) return undo(saved);
-    if (!existed) created.push_back(path);
+    if (Status saved = saveImage(staged->pathFor(file), *image); !saved) {
+      return makeError((out.parent_path() / file).string() + ": " + saved.message());
+    }
+    order.push_back(file);
   }
-  if (Status written = writeFileAtomic(out, *text); !written) return undo(written);
-  return {};
+  if (Status written = writeFileAtomic(staged->pathFor(name), *text); !written) {
+    return makeError(out.string() + ": " + written.message());
+  }
+  order.push_back(name);
+  return staged->commit(order);
 }
 
 }  // namespace pw::engine

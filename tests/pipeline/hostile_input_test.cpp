@@ -8,9 +8,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -205,6 +207,86 @@ TEST_F(HostileInput, AHugeCameraHeightDoesNotMakeBuildLoop) {
   const CommandRun r = photowalk("build " + quoted(shot) + " -o " + quoted(dir_ / "m.wrl"), 120);
   EXPECT_NE(r.exitCode, 137) << "build still running after 120 s";  // timeout -s KILL
   EXPECT_NE(r.exitCode, -1) << r.output;
+}
+
+// ---- 2. A model written as one ----
+
+// Every file of `dir` (hidden ones too) by name, with its bytes.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) files[entry.path().filename().string()] = readText(entry.path());
+  return files;
+}
+
+// The model files of a snapshot (m.wrl, m_*), without the shots and photos.
+std::map<std::string, std::string> modelFiles(const std::map<std::string, std::string>& files) {
+  std::map<std::string, std::string> model;
+  for (const auto& [name, bytes] : files) {
+    if (name == "m.wrl" || name.rfind("m_", 0) == 0) model[name] = bytes;
+  }
+  return model;
+}
+
+TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind) {
+  // Model A in place; builds of B (another focal length: other textures, not only
+  // another scale) killed at moments spread over a build's run.
+  // Both shots are s.json, so that both models name their textures m_s_*.
+  const fs::path shotA = sampleShot("s.json");
+  std::string text = readText(shotA);
+  text.replace(text.find("914.014724"), 10, "860.000000");
+  fs::create_directories(dir_ / "b");
+  std::string shotB = text;
+  shotB.replace(shotB.find("\"corridor.png\""), 14, "\"../corridor.png\"");
+  writeText(dir_ / "b" / "s.json", shotB);
+  ASSERT_EQ(photowalk("build " + quoted(shotA) + " -o " + quoted(dir_ / "m.wrl"), 300).exitCode, 0);
+  const auto modelA = modelFiles(snapshot(dir_));
+  // B whole, for comparison, in a folder of its own.
+  const fs::path other = dir_ / "other";
+  fs::create_directories(other);
+  fs::copy_file(dir_ / "corridor.png", other / "corridor.png");
+  writeText(other / "s.json", text);
+  const auto started = std::chrono::steady_clock::now();
+  ASSERT_EQ(photowalk("build " + quoted(other / "s.json") + " -o " + quoted(other / "m.wrl"), 300).exitCode, 0);
+  const double buildS = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const auto modelB = modelFiles(snapshot(other));
+  ASSERT_NE(modelA, modelB);
+  ASSERT_NE(modelA.at("m_s_floor.png"), modelB.at("m_s_floor.png"));
+  constexpr int kTrials = 16;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const double delayS = buildS * (0.5 + 0.6 * trial / (kTrials - 1));  // writing is at the end
+    test::runCommand("timeout -s KILL " + std::to_string(delayS) + " " + binary() + " build " + quoted(dir_ / "b" / "s.json") +
+                     " -o " + quoted(dir_ / "m.wrl"));
+    const auto model = modelFiles(snapshot(dir_));
+    // Either model, whole.
+    const auto subset = [&](const std::map<std::string, std::string>& whole) {
+      for (const auto& [name, bytes] : whole) {
+        auto found = model.find(name);
+        if (found == model.end() || found->second != bytes) return false;
+      }
+      return true;
+    };
+    EXPECT_TRUE(model.at("m.wrl") == modelA.at("m.wrl") ? subset(modelA) : subset(modelB))
+        << "trial " << trial << " (killed after " << delayS << " s): a mixed model";
+  }
+  // A complete build after them leaves no hidden file of a killed one.
+  ASSERT_EQ(photowalk("build " + quoted(dir_ / "b" / "s.json") + " -o " + quoted(dir_ / "m.wrl"), 300).exitCode, 0);
+  for (const auto& [name, bytes] : snapshot(dir_)) EXPECT_NE(name[0], '.') << name << " was left behind";
+  EXPECT_EQ(modelFiles(snapshot(dir_)).at("m.wrl"), modelB.at("m.wrl"));
+}
+
+TEST_F(HostileInput, TwoToursToOneVideoDoNotShareATemporaryFile) {
+  // Both at once: each writes its own partial file; both end whole, one wins.
+  const std::string tour = binary() + " tour sample --frames 12 --size 64x36 --cpu --video " + quoted(dir_ / "v.avi");
+  const CommandRun r = test::runCommand("(" + tour + " -o " + quoted(dir_ / "a") + " > /dev/null 2>&1 & " + tour + " -o " +
+                                        quoted(dir_ / "b") + " > /dev/null 2>&1; wait; " + tour + " -o " +
+                                        quoted(dir_ / "c") + " > /dev/null 2>&1 && echo ok)");
+  EXPECT_TRUE(contains(r.output, "ok")) << r.output;
+  ASSERT_TRUE(fs::exists(dir_ / "v.avi"));
+  for (const auto& [name, bytes] : snapshot(dir_)) EXPECT_NE(name[0], '.') << name << " was left behind";
+  // A killed tour's partial video is removed by the next tour.
+  writeText(dir_ / (".v.partial-999999999.avi"), "left by a killed tour");
+  ASSERT_EQ(test::runCommand(tour + " -o " + quoted(dir_ / "d")).exitCode, 0);
+  EXPECT_FALSE(fs::exists(dir_ / ".v.partial-999999999.avi"));
 }
 
 // ---- 3. Never overwrite an input ----

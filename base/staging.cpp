@@ -1,0 +1,77 @@
+#include "base/staging.h"
+
+#include <random>
+#include <sstream>
+
+namespace pw {
+namespace fs = std::filesystem;
+
+std::string processIdText() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self", ec);  // "/proc/self" -> "12345"
+  return ec ? std::string("0") : self.filename().string();
+}
+
+void removeStaleTemporaries(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  const fs::path where = folder.empty() ? fs::path(".") : folder;
+  for (fs::directory_iterator it(where, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    size_t digits = prefix.size();
+    while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
+    if (digits == prefix.size() || digits == name.size() || (name[digits] != '-' && name[digits] != '.')) continue;
+    const std::string pid = name.substr(prefix.size(), digits - prefix.size());
+    std::error_code procEc;
+    if (pid == processIdText() || fs::exists(fs::path("/proc") / pid, procEc)) continue;  // still running
+    std::error_code removeEc;
+    fs::remove_all(it->path(), removeEc);
+  }
+}
+
+Result<StagedFiles> StagedFiles::create(const fs::path& destination, const std::string& name) {
+  const fs::path where = destination.empty() ? fs::path(".") : destination;
+  std::error_code existsEc;
+  if (!fs::is_directory(where, existsEc)) return makeError("the folder " + where.string() + " does not exist");
+  const std::string prefix = "." + name + ".photowalk-";
+  removeStaleTemporaries(where, prefix);
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    std::ostringstream folderName;
+    folderName << prefix << processIdText() << "-" << std::hex << (rng() & 0xffffff);
+    const fs::path folder = where / folderName.str();
+    std::error_code ec;
+    if (fs::create_directory(folder, ec)) return StagedFiles(where, folder);
+    if (ec) return makeError(where.string() + ": cannot write here: " + ec.message());
+  }
+  return makeError(where.string() + ": cannot make a temporary folder");
+}
+
+StagedFiles::StagedFiles(StagedFiles&& other) noexcept
+    : destination_(std::move(other.destination_)), folder_(std::move(other.folder_)) {
+  other.folder_.clear();
+}
+
+StagedFiles::~StagedFiles() {
+  if (folder_.empty()) return;
+  std::error_code ec;
+  fs::remove_all(folder_, ec);
+}
+
+Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
+  std::error_code ec;
+  for (const std::string& name : fileNames) {
+    if (!fs::is_regular_file(folder_ / name, ec)) return makeError((destination_ / name).string() + ": nothing was written");
+    // What would make a rename fail half-way through, seen before the first one.
+    if (fs::is_directory(destination_ / name, ec)) {
+      return makeError((destination_ / name).string() + ": is a folder; nothing was written");
+    }
+  }
+  for (const std::string& name : fileNames) {
+    fs::rename(folder_ / name, destination_ / name, ec);
+    if (ec) return makeError((destination_ / name).string() + ": cannot write: " + ec.message());
+  }
+  return {};
+}
+
+}  // namespace pw
