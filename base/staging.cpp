@@ -32,7 +32,7 @@ void removeStaleTemporaries(const fs::path& folder, const std::string& prefix) {
 Result<StagedFiles> StagedFiles::create(const fs::path& destination, const std::string& name) {
   const fs::path where = destination.empty() ? fs::path(".") : destination;
   std::error_code existsEc;
-  if (!fs::is_directory(where, existsEc)) return makeError("the folder " + where.string() + " does not exist");
+  if (!fs::exists(where, existsEc)) return makeError("the folder " + where.string() + " does not exist");
   const std::string prefix = "." + name + ".photowalk-";
   removeStaleTemporaries(where, prefix);
   static thread_local std::mt19937_64 rng{std::random_device{}()};
@@ -64,7 +64,7 @@ Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
     if (!fs::is_regular_file(folder_ / name, ec)) return makeError((destination_ / name).string() + ": nothing was written");
     // What would make a rename fail half-way through, seen before the first one.
     if (fs::is_directory(destination_ / name, ec)) {
-      return makeError((destination_ / name).string() + ": is a folder; nothing was written");
+      return makeError((destination_ / name).string() + ": cannot write: Is a directory");
     }
   }
   for (const std::string& name : fileNames) {

@@ -475,8 +475,8 @@ bool endsWith(std::string s, const std::string& suffix) {
 
 // The strings the model now at `out` quotes (its urls among them), and the detail
 // layers named after them: the files this writer wrote beside it before, which a new
-// model of that name may replace. Nothing
-// when there is no model there (or it cannot be read).
+// model of that name may replace. Nothing when there is no model there (or it cannot
+// be read).
 std::unordered_set<std::string> quotedInPreviousModel(const fs::path& out, bool gz) {
   std::unordered_set<std::string> quoted;
   auto bytes = readInputFile(out, kModelInput);
@@ -517,10 +517,16 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
   std::unordered_set<std::string> taken;
   // A name is free unless another texture has it or a file this writer did not write
   // (one the model now at `out` does not name) is there: never write over a person's file.
-  std::error_code existsEc;
-  const bool previousModel = fs::exists(out, existsEc);
-  const std::unordered_set<std::string> ours =
-      previousModel ? quotedInPreviousModel(out, gz) : std::unordered_set<std::string>{};
+  // The model at `out` and those of its other VRML names (OUTSTEM.wrl, .wrz, .wrl.gz:
+  // they share the textures' names) say which files are photowalk's.
+  std::unordered_set<std::string> ours;
+  for (const std::string& sibling : {name, outStem + ".wrl", outStem + ".wrz", outStem + ".wrl.gz"}) {
+    std::error_code existsEc;
+    const fs::path model = out.parent_path() / sibling;
+    if (!fs::is_regular_file(model, existsEc)) continue;
+    const auto quoted = quotedInPreviousModel(model, sibling != outStem + ".wrl");
+    ours.insert(quoted.begin(), quoted.end());
+  }
   const auto nameFree = [&](const std::string& file) {
     if (taken.count(file)) return false;
     std::error_code ec;

@@ -19,8 +19,9 @@ namespace pw::engine {
 struct VrmlWriteOptions {
   bool jpegTextures = false;  // write textures as JPEG (quality 92) instead of PNG
   std::string title;          // WorldInfo title; empty: the scene's own title
-  // A texture's file name taken by a file the model now at `out` does not name (a
-  // person's own m_s_floor.png) is not written over: the texture gets a free name
+  // A texture's file name taken by a file that neither the model now at `out` nor one
+  // of its other VRML names (OUTSTEM.wrl, .wrz, .wrl.gz) names (a person's own
+  // m_s_floor.png) is not written over: the texture gets a free name
   // (m_s_floor_2.png). True (build --force): such files are replaced.
   bool overwriteForeignFiles = false;
 };
