@@ -274,6 +274,43 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
   EXPECT_EQ(modelFiles(snapshot(dir_)).at("m.wrl"), modelB.at("m.wrl"));
 }
 
+TEST_F(HostileInput, TwoBuildsToOneOutputLeaveOneModelWhole) {
+  // Shots A and B (another focal length), both s.json: their models name the same files.
+  const fs::path shotA = sampleShot("s.json");
+  std::string text = readText(shotA);
+  text.replace(text.find("914.014724"), 10, "860.000000");
+  fs::create_directories(dir_ / "b");
+  std::string shotB = text;
+  shotB.replace(shotB.find("\"corridor.png\""), 14, "\"../corridor.png\"");
+  writeText(dir_ / "b" / "s.json", shotB);
+  const fs::path out = dir_ / "out";
+  fs::create_directories(out);
+  const auto modelOf = [&](const fs::path& shot) {
+    const fs::path alone = dir_ / ("alone_" + shot.parent_path().filename().string());
+    fs::create_directories(alone);
+    EXPECT_EQ(photowalk("build " + quoted(shot) + " -o " + quoted(alone / "m.wrl"), 300).exitCode, 0);
+    return modelFiles(snapshot(alone));
+  };
+  const auto modelA = modelOf(shotA), modelB = modelOf(dir_ / "b" / "s.json");
+  ASSERT_NE(modelA.at("m_s_floor.png"), modelB.at("m_s_floor.png"));
+  for (int trial = 0; trial < 4; ++trial) {
+    const std::string build = binary() + " build ";
+    const CommandRun r = test::runCommand("(" + build + quoted(shotA) + " -o " + quoted(out / "m.wrl") + " > /dev/null & " +
+                                          build + quoted(dir_ / "b" / "s.json") + " -o " + quoted(out / "m.wrl") +
+                                          " > /dev/null; wait)");
+    const auto model = modelFiles(snapshot(out));
+    const auto whole = [&](const std::map<std::string, std::string>& expected) {
+      for (const auto& [name, bytes] : expected) {
+        auto found = model.find(name);
+        if (found == model.end() || found->second != bytes) return false;
+      }
+      return true;
+    };
+    EXPECT_TRUE(whole(modelA) || whole(modelB)) << "trial " << trial << ": a mixed model";
+    for (const auto& [name, bytes] : snapshot(out)) EXPECT_NE(name[0], '.') << name << " was left behind";
+  }
+}
+
 TEST_F(HostileInput, TwoToursToOneVideoDoNotShareATemporaryFile) {
   // Both at once: each writes its own partial file; both end whole, one wins.
   const std::string tour = binary() + " tour sample --frames 12 --size 64x36 --cpu --video " + quoted(dir_ / "v.avi");
