@@ -1,6 +1,9 @@
 #include "base/staging.h"
 
+#include <chrono>
+#include <fstream>
 #include <random>
+#include <thread>
 #include <sstream>
 
 namespace pw {
@@ -58,6 +61,57 @@ StagedFiles::~StagedFiles() {
   fs::remove_all(folder_, ec);
 }
 
+namespace {
+
+// One commit at a time into one destination under one name: the lock is a folder
+// (mkdir is atomic) holding an empty file named after its process. A lock whose
+// process is gone (killed during its renames) is taken over.
+class CommitLock {
+ public:
+  static Result<CommitLock> acquire(const fs::path& destination, const std::string& name) {
+    const fs::path lock = destination / ("." + name + ".photowalk-lock");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < deadline) {
+      std::error_code ec;
+      if (fs::create_directory(lock, ec)) {
+        std::ofstream(lock / processIdText()).close();
+        return CommitLock(lock);
+      }
+      if (ec) return makeError(destination.string() + ": cannot write here: " + ec.message());
+      // Held: by a process that still runs? (A lock just made may not name it yet.)
+      bool holderRuns = false, named = false;
+      for (fs::directory_iterator it(lock, ec), end; !ec && it != end; it.increment(ec)) {
+        named = true;
+        std::error_code procEc;
+        holderRuns = holderRuns || fs::exists(fs::path("/proc") / it->path().filename(), procEc);
+      }
+      std::error_code timeEc;
+      const auto age = fs::file_time_type::clock::now() - fs::last_write_time(lock, timeEc);
+      if (!timeEc && !holderRuns && (named || age > std::chrono::seconds(2))) {
+        fs::remove_all(lock, ec);  // its process was killed
+        continue;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return makeError((destination / name).string() + ": another photowalk has been writing it for 30 s; nothing was written");
+  }
+  CommitLock(CommitLock&& other) noexcept : path_(std::move(other.path_)) { other.path_.clear(); }
+  CommitLock(const CommitLock&) = delete;
+  CommitLock& operator=(const CommitLock&) = delete;
+  CommitLock& operator=(CommitLock&&) = delete;
+  ~CommitLock() {
+    if (path_.empty()) return;
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+
+ private:
+  explicit CommitLock(fs::path path) : path_(std::move(path)) {}
+  fs::path path_;
+};
+
+}  // namespace
+
 Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
   std::error_code ec;
   for (const std::string& name : fileNames) {
@@ -67,6 +121,10 @@ Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
       return makeError((destination_ / name).string() + ": cannot write: Is a directory");
     }
   }
+  // Two writers of one model: each moves all its files in while it holds the lock, so
+  // the last one wins whole, never a mix of both.
+  auto lock = CommitLock::acquire(destination_, fileNames.empty() ? std::string("files") : fileNames.back());
+  if (!lock) return lock.error();
   for (const std::string& name : fileNames) {
     fs::rename(folder_ / name, destination_ / name, ec);
     if (ec) return makeError((destination_ / name).string() + ": cannot write: " + ec.message());

@@ -35,8 +35,9 @@ class StagedFiles {
   std::filesystem::path pathFor(const std::string& fileName) const { return folder_ / fileName; }
 
   // Moves the files into the destination in this order (the file that names the
-  // others last), each by one rename. A file missing from the folder is an error and
-  // nothing is moved.
+  // others last), each by one rename, holding a lock (a hidden folder named after the
+  // last file) so that two writers of one model do not interleave: the last wins
+  // whole. A file missing from the folder is an error and nothing is moved.
   Status commit(const std::vector<std::string>& fileNames);
 
  private:
