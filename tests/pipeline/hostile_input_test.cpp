@@ -146,6 +146,39 @@ TEST_F(HostileInput, AShotFileIsReadUpToSixteenMebibytes) {
       << r.output;
 }
 
+TEST_F(HostileInput, EachKindOfFileOneByteOverItsLimitIsRefusedUnread) {
+  // Sparse files: nothing is written but the length, and nothing need be read to refuse
+  // them (base_tests read a file of exactly its kind's limit).
+  const auto sparse = [&](const std::string& name, std::uintmax_t bytes) {
+    writeText(dir_ / name, "");
+    fs::resize_file(dir_ / name, bytes);
+    return dir_ / name;
+  };
+  constexpr std::uintmax_t kMiB = std::uintmax_t{1} << 20;
+  const fs::path shot = sampleShot();
+  std::string text = readText(shot);
+  text.replace(text.find("\"corridor.png\""), 14, "\"photo.png\"");
+  writeText(dir_ / "big_photo.json", text);
+  sparse("photo.png", 512 * kMiB + 1);
+  CommandRun r = photowalk("measure " + quoted(dir_ / "big_photo.json"));
+  EXPECT_TRUE(contains(r.output, "photo.png: the photo is 536870913 bytes, more than the 512 MiB photowalk reads for a photo"))
+      << r.output;
+  sparse("layout.json", 16 * kMiB + 1);
+  r = photowalk("build --layout " + quoted(dir_ / "layout.json") + " -o " + quoted(dir_ / "m.wrl"));
+  EXPECT_TRUE(contains(r.output, "the layout is 16777217 bytes, more than the 16 MiB")) << r.output;
+  sparse("big.wrl", 1024 * kMiB + 1);
+  r = photowalk("convert " + quoted(dir_ / "big.wrl") + " " + quoted(dir_ / "o.glb"));
+  EXPECT_TRUE(contains(r.output, "the model is 1073741825 bytes, more than the 1 GiB photowalk reads for a model")) << r.output;
+  sparse("tex.png", 256 * kMiB + 1);
+  writeText(dir_ / "m.wrl", kVrmlHeader + "Shape { appearance Appearance { texture ImageTexture { url \"tex.png\" } } geometry Box {} }\n");
+  r = photowalk("convert " + quoted(dir_ / "m.wrl") + " " + quoted(dir_ / "o.glb"));
+  EXPECT_TRUE(contains(r.output, "the texture is 268435457 bytes, more than the 256 MiB")) << r.output;
+  sparse("data.bin", 1024 * kMiB + 1);
+  writeText(dir_ / "m.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "data.bin", "byteLength": 12}]})");
+  r = photowalk("convert " + quoted(dir_ / "m.gltf") + " " + quoted(dir_ / "o2.glb"));
+  EXPECT_TRUE(contains(r.output, "the buffer is 1073741825 bytes, more than the 1 GiB photowalk reads for a buffer")) << r.output;
+}
+
 // An IndexedFaceSet whose coordIndex has `count` entries (-1: no face, so the
 // accepted case costs only the parse).
 std::string faceSetWithIndices(size_t count) {
