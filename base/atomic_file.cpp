@@ -1,5 +1,8 @@
 #include "base/atomic_file.h"
 
+#include "base/input_file.h"
+#include "base/staging.h"
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -15,7 +18,9 @@ fs::path tempPathFor(const fs::path& path) {
   static thread_local std::mt19937_64 rng{std::random_device{}()};
   std::ostringstream name;
   // Keep the extension last so that writers choosing a format by extension still work.
-  name << "." << path.stem().string() << ".tmp" << std::hex << (rng() & 0xffffff) << path.extension().string();
+  // The process id in the name lets a later run remove what a killed one left.
+  name << "." << path.stem().string() << ".tmp-" << processIdText() << "-" << std::hex << (rng() & 0xffffff)
+       << path.extension().string();
   return path.parent_path() / name.str();
 }
 
@@ -26,6 +31,7 @@ Status writeViaTempFile(const fs::path& path, const std::function<Status(const f
   if (path.has_parent_path() && !fs::exists(path.parent_path(), ec)) {
     return makeError(path.string() + ": the folder " + path.parent_path().string() + " does not exist");
   }
+  removeStaleTemporaries(path.parent_path(), "." + path.stem().string() + ".tmp-");
   const fs::path temp = tempPathFor(path);
   Status written = write(temp);
   if (written && !fs::exists(temp, ec)) written = makeError(path.string() + ": nothing was written");
@@ -57,16 +63,6 @@ Status writeFileAtomic(const fs::path& path, const std::string& text) {
   return writeFileAtomic(path, std::span<const char>(text.data(), text.size()));
 }
 
-Result<std::string> readFile(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return makeError(path.string() + ": no such file");
-  if (fs::is_directory(path, ec)) return makeError(path.string() + ": is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(path.string() + ": cannot read: " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) return makeError(path.string() + ": read failed");
-  return buffer.str();
-}
+Result<std::string> readFile(const fs::path& path) { return readInputFile(path, kAnyInput); }
 
 }  // namespace pw

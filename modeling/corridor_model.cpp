@@ -39,13 +39,18 @@ bool visibleInPhoto(const Measurement& m, const glm::dvec3& p, int width, int he
 }
 
 // How far beyond the near end (z > 0) the photo still shows some of the floor, walls
-// or ceiling: scanned in 2 cm steps towards the camera.
+// or ceiling: scanned in 2 cm steps towards the camera, or in kMaxNearSteps steps
+// where the camera stands further back than that (the work does not grow with the
+// shot's scale: a camera height of 1e7 m would be 5e8 steps of 2 cm).
+constexpr int kMaxNearSteps = 4096;
 double photoNearExtent(const Measurement& m, const metrology::Dimensions& box, int width, int height) {
   const double cameraZ = m.pose.positionM.z;
+  if (!std::isfinite(cameraZ)) return 0;
+  const double step = std::max(0.02, (cameraZ - 0.05) / kMaxNearSteps);
   double best = 0;
   for (int surface = 1; surface < kFaces; ++surface) {
     const Panel full = surfacePanel(static_cast<Surface>(surface), box, std::max(0.0, cameraZ));
-    for (double z = 0.02; z < cameraZ - 0.05; z += 0.02) {
+    for (double z = step; z < cameraZ - 0.05; z += step) {
       const Panel at = surfacePanel(static_cast<Surface>(surface), box, z);
       // The cross-section at depth z is the extent's edge nearest the camera.
       const bool alongS = at.extent.s0 < 0 || full.extent.s1 > at.extent.s1 + 1e-9;

@@ -11,6 +11,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "base/input_file.h"
+
 namespace pw::modeling {
 namespace {
 
@@ -158,6 +160,7 @@ ExifTags load(const unsigned char* bytes, size_t size) {
 ExifTags readExifBytes(const uint8_t* data, size_t size) { return load(data, size); }
 
 ExifTags readExif(const std::filesystem::path& path) {
+  if (!checkInputFile(path, kPhotoInput)) return {};  // never a FIFO or a device
   std::unique_ptr<ExifLoader, ExifLoaderDeleter> loader(exif_loader_new());
   if (!loader) return {};
   // The loader finds the APP1 "Exif" segment of a JPEG (it reads no further).
@@ -269,6 +272,7 @@ std::optional<ExifFocal> exifFocal(const ExifTags& tags, int storedWidth, int st
 
 Result<Photo> readPhoto(const std::filesystem::path& path) {
   Photo photo;
+  PW_TRY(checkInputFile(path, kPhotoInput));
   cv::Mat stored;
   try {
     stored = cv::imread(path.string(), cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 
 namespace pw::modeling {
 namespace fs = std::filesystem;
@@ -20,11 +21,39 @@ Result<double> finiteNumber(const json& value, const std::string& what) {
   return value.get<double>();
 }
 
+// "an array", "a number"...: what a field of the wrong type holds.
+std::string typeOf(const json& value) {
+  if (value.is_string()) return "a string";
+  if (value.is_number()) return "a number";
+  if (value.is_boolean()) return "a boolean";
+  if (value.is_null()) return "null";
+  if (value.is_array()) return "an array";
+  return "an object";
+}
+
+Result<Layout> readLayout(const fs::path& path);
+
 }  // namespace
 
 Result<Layout> readLayoutFile(const fs::path& path) {
+  try {
+    return readLayout(path);
+  } catch (const json::exception& e) {
+    // Every field is checked before use; this only turns an oversight into an error
+    // that names the file (e.what() is "[json.exception.type_error.302] ...").
+    std::string what = e.what();
+    if (const size_t close = what.find("] "); what.rfind("[json.", 0) == 0 && close != std::string::npos) {
+      what = what.substr(close + 2);
+    }
+    return makeError(path.string() + ": malformed layout (" + what + ")");
+  }
+}
+
+namespace {
+
+Result<Layout> readLayout(const fs::path& path) {
   const std::string where = path.string();
-  auto text = readFile(path);
+  auto text = readInputFile(path, kLayoutInput);
   if (!text) return text.error();
   const json doc = json::parse(*text, nullptr, false);
   if (doc.is_discarded()) return makeError(where + ": not valid JSON");
@@ -38,11 +67,20 @@ Result<Layout> readLayoutFile(const fs::path& path) {
     const std::string at = where + ": corridor " + std::to_string(layout.corridors.size() + 1);
     if (!item.is_object()) return makeError(at + " must be an object");
     LayoutEntry entry;
-    entry.name = item.value("name", "corridor" + std::to_string(layout.corridors.size() + 1));
+    entry.name = "corridor" + std::to_string(layout.corridors.size() + 1);
+    if (item.contains("name")) {
+      if (!item["name"].is_string() || item["name"].get<std::string>().empty()) {
+        return makeError(at + ": field \"name\" must be a non-empty string, not " + typeOf(item["name"]));
+      }
+      entry.name = item["name"].get<std::string>();
+    }
     for (const LayoutEntry& other : layout.corridors) {
       if (other.name == entry.name) return makeError(at + ": the name \"" + entry.name + "\" is used twice");
     }
-    if (!item.contains("shot") || !item["shot"].is_string()) return makeError(at + " needs \"shot\": the shot file");
+    if (!item.contains("shot")) return makeError(at + " needs \"shot\": the shot file");
+    if (!item["shot"].is_string() || item["shot"].get<std::string>().empty()) {
+      return makeError(at + ": field \"shot\" must be the shot file's name (a string), not " + typeOf(item["shot"]));
+    }
     entry.shot = item["shot"].get<std::string>();
     if (entry.shot.is_relative()) entry.shot = (path.parent_path() / entry.shot).lexically_normal();
     if (item.contains("attach")) {
@@ -56,7 +94,10 @@ Result<Layout> readLayoutFile(const fs::path& path) {
         if (layout.corridors[i].name == to) attach.to = static_cast<int>(i);
       }
       if (attach.to < 0) return makeError(at + ": attaches to \"" + to + "\", which is not listed before it");
-      const std::string side = a.value("side", "far");
+      if (a.contains("side") && !a["side"].is_string()) {
+        return makeError(at + ": field \"attach.side\" must be \"far\", \"left\" or \"right\", not " + typeOf(a["side"]));
+      }
+      const std::string side = a.contains("side") ? a["side"].get<std::string>() : std::string("far");
       if (side == "far") attach.side = Side::kFar;
       else if (side == "left") attach.side = Side::kLeft;
       else if (side == "right") attach.side = Side::kRight;
@@ -89,6 +130,8 @@ Result<Layout> readLayoutFile(const fs::path& path) {
   }
   return layout;
 }
+
+}  // namespace
 
 Status writeLayoutFile(const fs::path& path, const Layout& layout) {
   json doc = layout.otherFields.is_object() ? layout.otherFields : json::object();

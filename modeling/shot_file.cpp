@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 #include "metrology/input_sigma.h"
 #include "modeling/exif.h"
 
@@ -139,7 +140,7 @@ constexpr const char* kShotFields[] = {"image",           "image_size",      "fo
 
 Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bool allowNoScale) {
   const std::string where = path.string();
-  auto text = readFile(path);
+  auto text = readInputFile(path, kShotInput);
   if (!text) return text.error();
   json doc;
   try {
@@ -275,6 +276,9 @@ Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx,
   metrology::Shot& s = loaded.shot;
   std::error_code ec;
   if (!fs::exists(s.imagePath, ec)) return makeError(path.string() + ": image " + s.imagePath + " does not exist");
+  if (auto checked = checkInputFile(s.imagePath, kPhotoInput); !checked) {
+    return makeError(path.string() + ": image: " + checked.message());
+  }
   if (fs::file_size(s.imagePath, ec) == 0) return makeError(path.string() + ": image " + s.imagePath + " is empty");
   std::string decoderSaid;
   {

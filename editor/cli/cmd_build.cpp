@@ -5,8 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "base/staging.h"
 #include "editor/cli/command.h"
+#include "modeling/layout.h"
 #include "modeling/pipeline.h"
+#include "modeling/shot_file.h"
 #include "engine/gltf/gltf_writer.h"
 #include "engine/vrml/vrml_writer.h"
 
@@ -34,6 +37,9 @@ constexpr const char* kUsage =
     "  --no-detail           synthesize what the photo did not see, but add no detail where\n"
     "                        it saw a surface coarsely\n"
     "  --jpeg                textures as JPEG instead of PNG\n"
+    "  --force               replace files beside OUT.wrl that have a texture's name but\n"
+    "                        that the model there does not name (by default such a texture\n"
+    "                        gets a free name: OUT_s_floor_2.png)\n"
     "  --sigma-px S          corner standard deviation for the printed ± (default 1)\n";
 
 bool endsWith(const std::string& s, const std::string& suffix) {
@@ -74,6 +80,7 @@ int runBuild(Args& args) {
   options.detail = !args.flag("--no-detail");
   engine::VrmlWriteOptions vrmlOptions;
   vrmlOptions.jpegTextures = args.flag("--jpeg");
+  vrmlOptions.overwriteForeignFiles = args.flag("--force");
   const std::vector<std::string> shots = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (!output) return fail("build needs -o OUT.wrl");
@@ -105,6 +112,18 @@ int runBuild(Args& args) {
     layout = modeling::chainLayout(std::vector<fs::path>(shots.begin(), shots.end()));
   }
 
+  // Never over an input: the layout, a shot or a shot's photo.
+  std::vector<NamedInput> inputs;
+  if (layoutPath) inputs.push_back({"the layout", *layoutPath});
+  for (const modeling::LayoutEntry& entry : layout.corridors) {
+    inputs.push_back({"a shot", entry.shot.string()});
+    if (auto shot = modeling::readShotFile(entry.shot); shot) inputs.push_back({"a shot's photo", shot->imagePath});
+  }
+  if (auto distinct = checkNotAnInput(*output, "-o", inputs); !distinct) return fail(distinct.message());
+  if (gltfPath) {
+    if (auto distinct = checkNotAnInput(*gltfPath, "--gltf", inputs); !distinct) return fail(distinct.message());
+  }
+
   auto model = modeling::buildModel(layout, options, measureOptions);
   if (!model) return fail(model.message());
   for (const modeling::CorridorOverlap& overlap : model->plan.overlaps) {
@@ -113,21 +132,41 @@ int runBuild(Args& args) {
 
   // Everything that can fail on the input has failed by now; write the files, into
   // folders made for them if need be (as tour does).
+  // The glTF is written under a pending name and takes its own only once the VRML
+  // model is in place: a failed build leaves the previous .glb and .wrl as they were.
   std::vector<fs::path> created = createFoldersFor(*output);
+  fs::path pendingGltf;
   if (gltfPath) {
     const std::vector<fs::path> forGltf = createFoldersFor(*gltfPath);
     created.insert(created.end(), forGltf.begin(), forGltf.end());
-    if (auto written = engine::writeGltf(model->scene, *gltfPath); !written) {
+    const fs::path target(*gltfPath);
+    const std::string prefix = "." + target.stem().string() + ".pending-";
+    removeStaleTemporaries(target.parent_path(), prefix);
+    pendingGltf = target.parent_path() / (prefix + processIdText() + target.extension().string());
+    if (auto written = engine::writeGltf(model->scene, pendingGltf); !written) {
+      std::error_code ec;
+      fs::remove(pendingGltf, ec);
       removeFolders(created);
-      return fail(written.message());
+      std::string message = written.message();
+      if (const size_t at = message.find(pendingGltf.string()); at != std::string::npos) {
+        message.replace(at, pendingGltf.string().size(), *gltfPath);
+      }
+      return fail(message);
     }
   }
   if (auto written = engine::writeVrml(model->scene, *output, vrmlOptions); !written) {
-    // No half of a model: the glTF written a moment ago goes too, and the folders made.
     std::error_code ec;
-    if (gltfPath) fs::remove(*gltfPath, ec);
+    if (gltfPath) fs::remove(pendingGltf, ec);
     removeFolders(created);
     return fail(written.message());
+  }
+  if (gltfPath) {
+    std::error_code ec;
+    fs::rename(pendingGltf, *gltfPath, ec);
+    if (ec) {
+      fs::remove(pendingGltf, ec);
+      return fail(*gltfPath + ": cannot write: " + ec.message() + " (" + *output + " was written)");
+    }
   }
 
   for (const modeling::CorridorModel& corridor : model->corridors) {

@@ -31,6 +31,7 @@ int runConvert(Args& args) {
   const std::optional<std::string> title = args.value("--title");
   const bool jpeg = args.flag("--jpeg-textures");
   const bool quiet = args.flag("--quiet", "-q");
+  const std::vector<std::string> allowed = args.values("--allow-folder");
   const std::vector<std::string> files = args.positionals();
   if (Status s = args.finish(); !s) return fail(s.message() + "; see photowalk convert --help");
   if (files.size() != 2) return fail("convert wants an input and an output file: photowalk convert IN OUT");
@@ -40,11 +41,14 @@ int runConvert(Args& args) {
     return fail(out.string() + ": unknown output extension; use .wrl, .wrl.gz, .wrz, .glb or .gltf");
   }
   if (jpeg && format == Format::kGltf) return fail("--jpeg-textures is for VRML output; glTF embeds PNG textures");
+  if (auto distinct = checkNotAnInput(out.string(), "the output", {{"the input model", in.string()}}); !distinct) {
+    return fail(distinct.message());
+  }
 
   std::vector<std::string> warnings;
-  auto scene = engine::loadModel(in, &warnings);
+  auto scene = engine::loadModel(in, &warnings, std::vector<fs::path>(allowed.begin(), allowed.end()));
   if (!quiet) {
-    for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    for (const std::string& w : warnings) printWarning(w);
   }
   if (!scene) return fail(scene.message());
   if (title) scene->title = *title;
@@ -74,7 +78,9 @@ PW_COMMAND(convert, "convert", "convert a model between formats (VRML97, glTF 2.
            "  .glb, .gltf           glTF 2.0, binary or JSON, textures embedded\n\n"
            "  --title TEXT      the title of the output (default: the input's)\n"
            "  --jpeg-textures   VRML output: textures as JPEG (quality 92) instead of PNG\n"
-           "  --quiet, -q       print nothing but errors\n\n"
+           "  --quiet, -q       print nothing but errors\n"
+           "  --allow-folder DIR  let IN's Inlines, textures and buffers come from DIR too\n"
+           "                    (by default only from IN's own folder; repeatable)\n\n"
            "Warnings about the input (unsupported nodes, missing textures) go to stderr; the\n"
            "exit status is 1 with a one-line error when the input cannot be read or OUT written.\n",
            runConvert);

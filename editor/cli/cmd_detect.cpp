@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 #include "editor/cli/command.h"
 #include "modeling/exif.h"
 #include "modeling/shot_file.h"
@@ -191,12 +192,18 @@ int runDetect(Args& args) {
   const std::string photoPath = positionals.empty() ? shot.imagePath : positionals[0];
   std::error_code ec;
   if (!fs::is_regular_file(photoPath, ec)) return fail(photoPath + ": no such file");
+  std::vector<NamedInput> inputs{{"the photo", photoPath}};
+  if (hintPath) inputs.push_back({"the --hint shot", *hintPath});
+  if (auto distinct = checkNotAnInput(*output, "-o", inputs); !distinct) return fail(distinct.message());
+  if (overlayPath) {
+    if (auto distinct = checkNotAnInput(*overlayPath, "--overlay", inputs); !distinct) return fail(distinct.message());
+  }
   // The photo as shown (its EXIF orientation applied, as every reader of the shot
   // applies it), and the EXIF focal length when none is given.
   auto read = modeling::readPhoto(photoPath);
   if (!read) return fail(read.message());
   const cv::Mat& photo = read->bgr;
-  for (const std::string& note : read->notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+  for (const std::string& note : read->notes) printNote(note);
   std::optional<modeling::ExifFocal> exifFocal;
   if (!options.focalPx && read->focal) {
     exifFocal = read->focal;
@@ -210,7 +217,7 @@ int runDetect(Args& args) {
 
   auto detection = metrology::detect::detectCorridor(photo, options);
   if (!detection) return fail(photoPath + ": " + detection.message());
-  for (const std::string& warning : detection->warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  for (const std::string& warning : detection->warnings) printWarning(warning);
 
   const std::string focalSource = exifFocal ? exifFocal->source
                                   : hintPath && !focal ? std::string("shot")
@@ -232,7 +239,7 @@ int runDetect(Args& args) {
   keptFields["detection"] = report;
 
   if (!detection->found) {
-    std::fprintf(stderr, "no corridor found in %s: %s\n", photoPath.c_str(), detection->notFoundReason.c_str());
+    std::fprintf(stderr, "%s\n", escapeControls("no corridor found in " + photoPath + ": " + detection->notFoundReason).c_str());
     if (!detection->hasVanishingPoints) return kExitNotFound;
     std::printf("vanishing points (focal %.1f px, %s): corridor %s, horizontal %s, vertical %s\n", detection->focalPx,
                 focalSource.c_str(), homogeneousText(detection->corridor).c_str(),
@@ -274,14 +281,12 @@ int runDetect(Args& args) {
                              : "nearest depth inside the photo";
   std::printf("wrote %s (P5..P8 at the %s)\n", output->c_str(), nearText);
   if (!cameraHeightM && !shot.reference) {
-    std::fprintf(stderr, "note: no --camera-height: add camera_height_m (or a reference) to %s before measure\n",
-                 output->c_str());
+    printNote("no --camera-height: add camera_height_m (or a reference) to " + *output + " before measure");
   }
   if (!detection->confident) {
     std::string why;
     for (const std::string& doubt : detection->doubts) why += (why.empty() ? "" : "; ") + doubt;
-    std::fprintf(stderr, "warning: unsure of this corridor, check it in the editor (photowalk edit %s): %s\n",
-                 output->c_str(), why.c_str());
+    printWarning("unsure of this corridor, check it in the editor (photowalk edit " + *output + "): " + why);
     return kExitUnsure;
   }
   return kExitOk;

@@ -106,6 +106,14 @@ int runMeasure(Args& args) {
 
   auto loaded = modeling::loadShot(shotPath, focalPx, assumeDefaults);
   if (!loaded) return fail(loaded.message());
+  if (sheetPath) {
+    if (auto image = checkImageExtension(*sheetPath, "--sheet"); !image) return fail(image.message());
+    if (auto distinct = checkNotAnInput(*sheetPath, "--sheet",
+                                        {{"the shot", shotPath}, {"the shot's photo", loaded->shot.imagePath}});
+        !distinct) {
+      return fail(distinct.message());
+    }
+  }
   std::vector<std::string> assumptions;
   metrology::InputOrigins origins;
   origins.focal = metrology::focalOriginOf(loaded->focalSource);

@@ -86,6 +86,16 @@ int runRectify(Args& args) {
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir, ec)) return fail(dir.string() + ": cannot create the output folder");
 
+  // Never over an input: a shot or photo kept in the output folder under a plane's name.
+  const std::vector<NamedInput> inputs{{"the shot", shotPath}, {"the shot's photo", loaded->shot.imagePath}};
+  for (int p = 0; p < metrology::kPlaneCount; ++p) {
+    const fs::path file = dir / (std::string(metrology::planeName(static_cast<metrology::Plane>(p))) + ".png");
+    if (auto distinct = checkNotAnInput(file.string(), "-o", inputs); !distinct) return fail(distinct.message());
+  }
+  if (auto distinct = checkNotAnInput((dir / "planes.json").string(), "-o", inputs); !distinct) {
+    return fail(distinct.message());
+  }
+
   nlohmann::ordered_json doc;
   doc["shot"] = shotPath;
   doc["method"] = metrology::methodName(measurement->method);

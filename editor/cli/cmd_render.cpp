@@ -1,5 +1,6 @@
 // photowalk render: one frame of a scene to a PNG, offscreen (lavapipe when there is no GPU).
 #include <algorithm>
+#include <filesystem>
 #include <cstdio>
 #include <string>
 
@@ -31,7 +32,9 @@ constexpr const char* kUsage =
     "                        distortion is drawn through it (the photo's size only)\n"
     "  --cpu                 use the CPU renderer (lavapipe) even if a GPU exists\n"
     "                        (as PW_DEVICE=cpu)\n"
-    "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n\n"
+    "  --msaa N              samples per pixel: 1, 2, 4 (default) or 8, as the device allows\n"
+    "  --allow-folder DIR    let the scene's Inlines and textures come from DIR too (by\n"
+    "                        default only from the scene's own folder; repeatable)\n\n"
     "With Vulkan validation on (PW_VALIDATION=1, or a Debug build) any validation message\n"
     "fails the command (exit 1) and no image is written.\n";
 
@@ -41,12 +44,17 @@ int runRender(Args& args) {
   const auto viewpointText = args.value("--viewpoint");
   const auto cameraFrom = args.value("--camera-from");
   const auto msaaText = args.value("--msaa");
+  const std::vector<std::string> allowed = args.values("--allow-folder");
   engine::RendererOptions options;
   options.forceCpu = args.flag("--cpu");
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (positionals.size() != 1) return fail("render takes one scene; see photowalk render --help");
   if (!output) return fail("render needs -o OUT.png");
+  if (auto image = checkImageExtension(*output, "-o"); !image) return fail(image.message());
+  std::vector<NamedInput> inputs{{"the model", positionals[0]}};
+  if (cameraFrom) inputs.push_back({"the --camera-from shot", *cameraFrom});
+  if (auto distinct = checkNotAnInput(*output, "-o", inputs); !distinct) return fail(distinct.message());
 
   std::pair<int, int> size{1280, 720};
   if (sizeText) {
@@ -60,8 +68,9 @@ int runRender(Args& args) {
     options.msaaSamples = *msaa;
   }
   std::vector<std::string> warnings;
-  auto scene = engine::loadModel(positionals[0], &warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  auto scene = engine::loadModel(positionals[0], &warnings,
+                                 std::vector<std::filesystem::path>(allowed.begin(), allowed.end()));
+  for (const std::string& w : warnings) printWarning(w);
   if (!scene) return fail(scene.message());
   if (viewpointText && cameraFrom) return fail("give --viewpoint or --camera-from, not both");
   engine::Camera camera;
@@ -104,7 +113,7 @@ int runRender(Args& args) {
 
   auto renderer = engine::Renderer::create(options);
   if (!renderer) return fail(renderer.message());
-  for (const std::string& note : (*renderer)->notes()) std::fprintf(stderr, "note: %s\n", note.c_str());
+  for (const std::string& note : (*renderer)->notes()) printNote(note);
   if (auto uploaded = (*renderer)->setScene(*scene); !uploaded) return fail(uploaded.message());
   Result<engine::Image> image = engine::Image{};
   if (!lens.distortion.isNone()) {

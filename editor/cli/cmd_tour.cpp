@@ -16,6 +16,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "base/atomic_file.h"
+#include "base/staging.h"
 #include "editor/cli/command.h"
 #include "engine/io/model_io.h"
 #include "modeling/tour.h"
@@ -36,7 +37,9 @@ constexpr const char* kUsage =
     "  --size WxH         frame size in pixels (default 1280x720)\n"
     "  --video OUT.mp4    also write a video (MPEG-4; .avi for Motion JPEG)\n"
     "  --fps F            video frame rate (default 30)\n"
-    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n\n"
+    "  --cpu              use the CPU renderer (lavapipe) even if a GPU exists\n"
+    "  --allow-folder DIR let the model's Inlines and textures come from DIR too (by\n"
+    "                     default only from the model's own folder; repeatable)\n\n"
     "With Vulkan validation on (PW_VALIDATION=1, or a Debug build) any validation message\n"
     "fails the command (exit 1): the frames drawn before it stay, later frames and the\n"
     "video are not written.\n";
@@ -155,6 +158,7 @@ int runTour(Args& args) {
   const auto sizeText = args.value("--size");
   const auto videoPath = args.value("--video");
   const auto fpsText = args.value("--fps");
+  const std::vector<std::string> allowed = args.values("--allow-folder");
   engine::RendererOptions options;
   options.forceCpu = args.flag("--cpu");
   const std::vector<std::string> positionals = args.positionals();
@@ -183,9 +187,14 @@ int runTour(Args& args) {
     fps = *parsed;
   }
 
+  if (videoPath) {
+    if (auto distinct = checkNotAnInput(*videoPath, "--video", {{"the model", positionals[0]}}); !distinct) {
+      return fail(distinct.message());
+    }
+  }
   std::vector<std::string> warnings;
-  auto scene = engine::loadModel(positionals[0], &warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  auto scene = engine::loadModel(positionals[0], &warnings, std::vector<fs::path>(allowed.begin(), allowed.end()));
+  for (const std::string& w : warnings) printWarning(w);
   if (!scene) return fail(scene.message());
 
   std::vector<engine::Camera> cameras;
@@ -211,12 +220,15 @@ int runTour(Args& args) {
   if (videoPath) {
     const fs::path target(*videoPath);
     const bool avi = target.extension() == ".avi";
-    videoTemp = target.parent_path() / ("." + target.stem().string() + ".partial" + target.extension().string());
+    // A name of this process's own (two tours to one --video do not share it); what a
+    // killed tour left is removed first.
+    const std::string prefix = "." + target.stem().string() + ".partial-";
+    removeStaleTemporaries(target.parent_path(), prefix);
+    videoTemp = target.parent_path() / (prefix + processIdText() + target.extension().string());
     video.open(videoTemp.string(), cv::VideoWriter::fourcc(avi ? 'M' : 'm', avi ? 'J' : 'p', avi ? 'P' : '4', avi ? 'G' : 'v'),
                fps, {size.first, size.second});
     if (!video.isOpened()) {
-      std::fprintf(stderr, "warning: %s: this OpenCV cannot write that video format; writing frames only\n",
-                   videoPath->c_str());
+      printWarning(*videoPath + ": this OpenCV cannot write that video format; writing frames only");
     }
   }
 
@@ -246,6 +258,18 @@ int runTour(Args& args) {
   std::printf("%d frames of %dx%d in %s\n", frames, size.first, size.second, output->c_str());
   if (video.isOpened()) {
     video.release();
+    // OpenCV's writer says nothing when the disk fills: read the video back, and keep
+    // the previous one unless every frame is there.
+    cv::VideoCapture check(videoTemp.string());
+    const bool readable = check.isOpened();
+    const double written = readable ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0;
+    check.release();
+    const auto bytes = fs::file_size(videoTemp, ec);
+    if (!readable || ec || bytes == 0 || (written > 0 && written < frames)) {
+      fs::remove(videoTemp, ec);
+      return fail(*videoPath + ": the video is incomplete (" + std::to_string(static_cast<long long>(written)) + " of " +
+                  std::to_string(frames) + " frames could be read back; disk full?); the frames are in " + *output);
+    }
     fs::rename(videoTemp, *videoPath, ec);
     if (ec) return fail(*videoPath + ": cannot write: " + ec.message());
     std::printf("video: %s (%.0f fps)\n", videoPath->c_str(), fps);

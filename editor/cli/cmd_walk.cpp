@@ -75,7 +75,7 @@ int runWalk(Args& args) {
 
   std::vector<std::string> warnings;
   auto scene = engine::loadModel(positionals[0], &warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  for (const std::string& w : warnings) printWarning(w);
   if (!scene) return fail(scene.message());
   options.title = "photowalk - " + (scene->title.empty() ? positionals[0] : scene->title);
 

@@ -1,6 +1,10 @@
 #include "editor/cli/command.h"
 
+#include "base/input_file.h"
+
+#include <cctype>
 #include <charconv>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 
@@ -21,10 +25,41 @@ const std::vector<Command>& commands() { return registry(); }
 
 CommandRegistrar::CommandRegistrar(const Command& command) { registry().push_back(command); }
 
+namespace {
+void printLine(const char* prefix, std::string_view message) {
+  const std::string line = escapeControls(message);
+  std::fprintf(stderr, "%s: %s\n", prefix, line.c_str());
+}
+}  // namespace
+
 int fail(std::string_view message) {
-  std::fprintf(stderr, "error: %.*s\n", static_cast<int>(message.size()), message.data());
+  printLine("error", message);
   return kExitFailure;
 }
+
+Status checkNotAnInput(const std::string& output, std::string_view option, const std::vector<NamedInput>& inputs) {
+  std::error_code ec;
+  if (!std::filesystem::exists(output, ec)) return {};
+  for (const NamedInput& input : inputs) {
+    if (input.path.empty()) continue;
+    std::error_code same;
+    if (!std::filesystem::equivalent(output, input.path, same) || same) continue;
+    return makeError(std::string(option) + " " + output + " is " + input.what + " (" + input.path +
+                     "), which the command reads; photowalk never writes over its input: choose another name");
+  }
+  return {};
+}
+
+Status checkImageExtension(const std::string& path, std::string_view option) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") return {};
+  return makeError(std::string(option) + " " + path + ": an image's name ends in .png, .jpg or .jpeg" +
+                   (ext.empty() ? std::string() : ", not " + ext));
+}
+
+void printWarning(std::string_view message) { printLine("warning", message); }
+void printNote(std::string_view message) { printLine("note", message); }
 
 bool Args::flag(std::string_view name, std::string_view alias) {
   bool found = false;

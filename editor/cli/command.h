@@ -42,6 +42,22 @@ Result<std::pair<int, int>> parseSize(std::string_view text, std::string_view op
 Result<double> parseNumber(std::string_view text, std::string_view optionName);
 Result<int> parsePositiveInt(std::string_view text, std::string_view optionName);
 
+// An input of a command, for checkNotAnInput: what it is ("the model", "the shot's
+// photo") and its path.
+struct NamedInput {
+  std::string what;
+  std::string path;
+};
+
+// An error when `output` (given with `option`, e.g. "-o") is the same file as one of
+// `inputs`, through symbolic and hard links too: a command never writes over what it
+// reads. An output that does not exist yet is none of them.
+Status checkNotAnInput(const std::string& output, std::string_view option, const std::vector<NamedInput>& inputs);
+
+// An error unless `path` ends in .png, .jpg or .jpeg (any case): where a command
+// writes an image, a name such as m.wrl is a mistake, not a wish.
+Status checkImageExtension(const std::string& path, std::string_view option);
+
 struct Command {
   const char* name;
   const char* summary;  // one line for `photowalk --help`
@@ -55,8 +71,13 @@ struct CommandRegistrar {
   explicit CommandRegistrar(const Command& command);
 };
 
-// Prints "error: MESSAGE" on stderr and returns kExitFailure.
+// Prints "error: MESSAGE" on stderr and returns kExitFailure. Every line these print
+// is one line: control characters in MESSAGE (a newline or NUL in a quoted path or
+// token) are escaped (base/input_file.h: escapeControls).
 int fail(std::string_view message);
+// "warning: MESSAGE" and "note: MESSAGE" on stderr, as fail() prints.
+void printWarning(std::string_view message);
+void printNote(std::string_view message);
 
 }  // namespace pw::editor
 

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "base/input_file.h"
 #include "editor/edit/autosave.h"
 #include "metrology/detect/detect.h"
 #include "modeling/shot_file.h"
@@ -69,10 +70,9 @@ namespace {
 
 // The photo of a shot file that `detect` wrote without corners (vanishing points only).
 std::optional<fs::path> vanishingPointsOnlyPhoto(const fs::path& path) {
-  std::error_code ec;
-  if (fs::file_size(path, ec) > (1u << 24) || ec) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  auto text = readInputFile(path, kShotInput);  // a regular file of at most 16 MiB
+  if (!text) return std::nullopt;
+  const nlohmann::json doc = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
   if (!modeling::isVanishingPointsOnly(doc) || !doc.contains("image") || !doc["image"].is_string()) return std::nullopt;
   const fs::path image = doc["image"].get<std::string>();
   return image.is_absolute() ? image : path.parent_path() / image;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 
 namespace pw::engine::gltf {
 
@@ -233,7 +234,14 @@ Result<std::vector<uint8_t>> resolveUri(const Source& source, const std::string&
   if (uri.find("://") != std::string::npos) return source.error(where + ": cannot fetch " + uri + "; only local files");
   if (source.baseDir.empty()) return source.error(where + ": refers to the file " + uri + ", which is not available here");
   const std::filesystem::path path = source.baseDir / percentDecoded(uri);
-  auto text = readFile(path);
+  std::vector<std::filesystem::path> folders{source.baseDir};
+  folders.insert(folders.end(), source.extraFolders.begin(), source.extraFolders.end());
+  if (!insideFolders(path, folders)) {
+    // The uri only: nothing of the file refused is read, let alone quoted.
+    return source.error(where + ": " + uri + " is outside the model's folder " + source.baseDir.string() +
+                        " (photowalk reads a model's files only from its own folder)");
+  }
+  auto text = readInputFile(path, kBufferInput);
   if (!text) return source.error(where + ": " + text.message());
   return std::vector<uint8_t>(text->begin(), text->end());
 }

@@ -24,6 +24,8 @@ struct Source {
   Json doc;
   std::vector<std::vector<uint8_t>> buffers;
   std::filesystem::path baseDir;  // empty: relative URIs are refused
+  // Besides baseDir, folders a URI may lead into (README: What photowalk reads).
+  std::vector<std::filesystem::path> extraFolders;
   std::string name;               // the file, for messages
   std::vector<std::string>* warnings = nullptr;
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 #include "engine/gltf/gltf_read_scene.h"
 #include "engine/gltf/gltf_read_source.h"
 #include "engine/scene/model_info.h"
@@ -109,9 +110,10 @@ Status loadBuffers(Source& source, std::span<const uint8_t> glbBin, bool hasGlbB
 }  // namespace
 
 Result<Scene> parseGltf(std::span<const uint8_t> bytes, const std::filesystem::path& baseDir, std::string_view name,
-                        std::vector<std::string>* warnings) {
+                        std::vector<std::string>* warnings, const std::vector<std::filesystem::path>& extraFolders) {
   Source source;
   source.baseDir = baseDir;
+  source.extraFolders = extraFolders;
   source.name = std::string(name);
   source.warnings = warnings;
   std::span<const uint8_t> bin;
@@ -162,11 +164,13 @@ Result<Scene> parseGltf(std::span<const uint8_t> bytes, const std::filesystem::p
   }
 }
 
-Result<Scene> readGltf(const std::filesystem::path& path, std::vector<std::string>* warnings) {
-  auto bytes = readFile(path);
+Result<Scene> readGltf(const std::filesystem::path& path, std::vector<std::string>* warnings,
+                       const std::vector<std::filesystem::path>& extraFolders) {
+  auto bytes = readInputFile(path, kModelInput);
   if (!bytes) return bytes.error();
   return parseGltf(std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size()),
-                   path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path(), path.string(), warnings);
+                   path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path(), path.string(), warnings,
+                   extraFolders);
 }
 
 }  // namespace pw::engine

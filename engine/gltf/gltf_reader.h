@@ -30,11 +30,14 @@ namespace pw::engine {
 // do not fit their buffers, non-finite vertex data, node loops, a required unknown
 // extension. What still leaves a usable scene (an image that cannot be decoded, an
 // ignored feature) is appended to `warnings` (may be null).
-Result<Scene> readGltf(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+// Buffers and images are read only from inside the file's folder and `extraFolders`.
+Result<Scene> readGltf(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
+                       const std::vector<std::filesystem::path>& extraFolders = {});
 
 // The same for bytes in memory; relative URIs resolve against `baseDir` (empty: they
 // are refused). `name` stands for the file in messages.
 Result<Scene> parseGltf(std::span<const uint8_t> bytes, const std::filesystem::path& baseDir, std::string_view name,
-                        std::vector<std::string>* warnings = nullptr);
+                        std::vector<std::string>* warnings = nullptr,
+                        const std::vector<std::filesystem::path>& extraFolders = {});
 
 }  // namespace pw::engine

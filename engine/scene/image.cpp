@@ -11,6 +11,7 @@
 #include <stb_image_write.h>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 
 namespace pw::engine {
 namespace fs = std::filesystem;
@@ -47,7 +48,7 @@ Result<Image> decodeImage(const uint8_t* bytes, size_t size, const std::string& 
 }
 
 Result<Image> loadImage(const fs::path& path) {
-  auto bytes = readFile(path);
+  auto bytes = readInputFile(path, kTextureInput);
   if (!bytes) return bytes.error();
   return decodeImage(reinterpret_cast<const uint8_t*>(bytes->data()), bytes->size(), path.string());
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/input_file.h"
 #include "engine/vrml/vrml_fields.h"
 
 namespace pw::engine::vrml {
@@ -60,7 +61,8 @@ std::shared_ptr<const Image> imageFromPixels(const std::vector<int32_t>& ints) {
 
 }  // namespace
 
-std::optional<fs::path> localPath(const std::string& url, const fs::path& dir, std::string& whyNot) {
+std::optional<fs::path> localPath(const std::string& url, const SourceFile* file, std::string& whyNot) {
+  const fs::path dir = file ? file->dir : fs::path();
   std::string u = url;
   const size_t colon = u.find(':');
   const size_t slash = u.find('/');
@@ -79,7 +81,15 @@ std::optional<fs::path> localPath(const std::string& url, const fs::path& dir, s
     return std::nullopt;
   }
   fs::path p = fs::path(percentDecode(u));
-  return p.is_absolute() ? p : dir / p;
+  p = p.is_absolute() ? p : dir / p;
+  std::vector<fs::path> folders = file ? file->folders : std::vector<fs::path>{};
+  if (folders.empty()) folders.push_back(dir.empty() ? fs::path(".") : dir);
+  if (!insideFolders(p, folders)) {
+    whyNot = "'" + url + "' is outside the model's folder " + folders.front().string() +
+             " (photowalk reads a model's files only from its own folder)";
+    return std::nullopt;
+  }
+  return p;
 }
 
 Material materialFromNode(const Node& node) {
@@ -115,7 +125,7 @@ std::shared_ptr<const Image> AppearanceBuilder::loadImageFile(const Node& node, 
   std::string reasons;
   for (const std::string& url : urls) {
     std::string whyNot;
-    const auto path = localPath(url, node.file ? node.file->dir : fs::path(), whyNot);
+    const auto path = localPath(url, node.file, whyNot);
     if (!path) {
       reasons += (reasons.empty() ? "" : "; ") + whyNot;
       continue;

@@ -46,9 +46,11 @@ glm::dmat3 textureTransformMatrix(const Node& textureTransform);
 // Material node fields, clamped to the ranges the standard gives.
 Material materialFromNode(const Node& node);
 
-// A url of an ImageTexture / Inline / EXTERNPROTO as a local path: relative urls
-// against `dir`, "file:" urls as paths; nullopt (with the reason) for remote urls.
-std::optional<std::filesystem::path> localPath(const std::string& url, const std::filesystem::path& dir,
-                                               std::string& whyNot);
+// A url of an ImageTexture / Inline / EXTERNPROTO in `file` as a local path: relative
+// urls against its folder, "file:" urls as paths; nullopt (with the reason, which
+// quotes the url but nothing of the file) for remote urls and for paths outside the
+// folders the file may read (SourceFile::folders): absolute, `..` out of it, a link
+// leading out.
+std::optional<std::filesystem::path> localPath(const std::string& url, const SourceFile* file, std::string& whyNot);
 
 }  // namespace pw::engine::vrml

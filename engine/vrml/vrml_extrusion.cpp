@@ -106,9 +106,10 @@ Result<std::optional<Mesh>> buildExtrusion(const Node& node, const GeometryOptio
     if (diagnostics) diagnostics->note(node.where() + ": Extrusion with fewer than 2 spine or cross-section points draws nothing");
     return std::optional<Mesh>{};
   }
-  if (n * m > (size_t{1} << 26)) {
+  if (n * m > kMaxExtrusionPoints) {
     return makeError(node.where() + ": Extrusion of " + std::to_string(n) + " x " + std::to_string(m) +
-                     " points is larger than photowalk accepts");
+                     " points is larger than photowalk accepts (at most " + std::to_string(kMaxExtrusionPoints) +
+                     " spine times cross-section points)");
   }
   std::vector<glm::dvec3> spine(n);
   for (size_t i = 0; i < n; ++i) spine[i] = {spineFloats[3 * i], spineFloats[3 * i + 1], spineFloats[3 * i + 2]};

@@ -124,6 +124,43 @@ Result<std::optional<Mesh>> buildPointSet(const Node& node, const NodeResolver& 
   return std::optional<Mesh>(std::move(mesh));
 }
 
+// The work limits of vrml_geometry.h, before any of the work: index lists, points,
+// an ElevationGrid's grid.
+Status checkGeometrySize(const Node& node, const NodeResolver& resolve) {
+  const std::string& type = node.typeName();
+  const auto tooMany = [&](const std::string& what, size_t count, size_t limit) {
+    return makeError(node.where() + ": " + type + " has " + std::to_string(count) + " " + what +
+                     ", more than photowalk accepts (at most " + std::to_string(limit) + ")");
+  };
+  if (type == "IndexedFaceSet" || type == "IndexedLineSet") {
+    const bool faces = type == "IndexedFaceSet";
+    for (const char* field : {"coordIndex", "colorIndex", "normalIndex", "texCoordIndex"}) {
+      if (!faces && (field[0] == 'n' || field[0] == 't')) continue;  // IndexedLineSet has neither
+      const size_t count = getInts(node, field).size();
+      if (count > kMaxGeometryIndices) return tooMany(std::string(field) + " entries", count, kMaxGeometryIndices);
+    }
+  }
+  if (type == "IndexedFaceSet" || type == "IndexedLineSet" || type == "PointSet") {
+    if (const NodePtr& raw = getNode(node, "coord")) {
+      auto coord = resolve(raw);
+      if (coord && *coord && (*coord)->typeName() == "Coordinate") {
+        const size_t points = getFloats(**coord, "point").size() / 3;
+        if (points > kMaxGeometryVertices) return tooMany("coord points", points, kMaxGeometryVertices);
+      }
+    }
+  }
+  if (type == "ElevationGrid") {
+    const int64_t x = getInt(node, "xDimension"), z = getInt(node, "zDimension");
+    if (x > 0 && z > 0 && static_cast<uint64_t>(x) * static_cast<uint64_t>(z) > kMaxGeometryVertices) {
+      return makeError(node.where() + ": ElevationGrid of " + std::to_string(x) + " x " + std::to_string(z) +
+                       " heights is more than photowalk accepts (at most " + std::to_string(kMaxGeometryVertices) + ")");
+    }
+    const size_t heights = getFloats(node, "height").size();
+    if (heights > kMaxGeometryVertices) return tooMany("heights", heights, kMaxGeometryVertices);
+  }
+  return {};
+}
+
 float positive(double value) { return std::isfinite(value) ? static_cast<float>(value) : 0.0f; }
 
 }  // namespace
@@ -132,6 +169,7 @@ Result<std::optional<Mesh>> buildGeometry(const Node& node, const NodeResolver& 
                                           Diagnostics* diagnostics) {
   const std::string& type = node.typeName();
   const bool tex = options.texCoords;
+  PW_TRY(checkGeometrySize(node, resolve));
   if (type == "IndexedFaceSet") return buildIndexedFaceSet(node, resolve, options, diagnostics);
   if (type == "Box") {
     const glm::dvec3 size = getVec3(node, "size");

@@ -19,6 +19,14 @@ namespace pw::engine::vrml {
 // Turns a possibly-PROTO node into the built-in node it stands for (or null).
 using NodeResolver = std::function<Result<NodePtr>(const NodePtr&)>;
 
+// Work limits on one geometry node (a model beyond them is refused with an error
+// that states the limit): so many coordIndex (or colorIndex...) entries, so many
+// points of its coord or heights of an ElevationGrid. Extrusion: its spine times its
+// cross-section points, at most kMaxExtrusionPoints.
+inline constexpr size_t kMaxGeometryIndices = size_t{1} << 24;   // 16,777,216
+inline constexpr size_t kMaxGeometryVertices = size_t{1} << 22;  // 4,194,304
+inline constexpr size_t kMaxExtrusionPoints = size_t{1} << 26;   // 67,108,864
+
 struct GeometryOptions {
   bool texCoords = false;  // the shape is textured: make texture coordinates
 };

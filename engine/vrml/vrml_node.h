@@ -78,6 +78,9 @@ struct SourceFile {
   std::filesystem::path path;  // as given, for messages
   std::filesystem::path dir;   // folder for relative urls
   std::string displayName;     // path.string(), cached
+  // Where its urls may lead (README: What photowalk reads): the folder of the model
+  // that was opened (an Inline's file keeps it) and any a person named. Empty: `dir`.
+  std::vector<std::filesystem::path> folders;
 };
 
 struct Proto;

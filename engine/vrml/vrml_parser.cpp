@@ -391,12 +391,9 @@ Status checkHeader(std::string_view text, const std::string& name) {
   if (first.substr(0, 4) == "#X3D" || first.substr(0, 5) == "<?xml") {
     return makeError(name + ": X3D files are not supported; photowalk reads VRML97 (#VRML V2.0 utf8)");
   }
-  std::string shown(first.substr(0, 40));
-  for (char& c : shown) {
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-  }
-  return makeError(name + ":1:1: not a VRML97 file: the first line must start with '#VRML V2.0 utf8', not '" + shown +
-                   "'");
+  // None of the file's content is quoted: an Inline may name any file, and a message
+  // must not carry a line of someone's /etc/shadow.
+  return makeError(name + ":1:1: not a VRML97 file: its first line does not start with '#VRML V2.0 utf8'");
 }
 
 }  // namespace

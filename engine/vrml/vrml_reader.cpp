@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 #include "engine/scene/model_info.h"
 #include "engine/vrml/gzip.h"
 #include "engine/vrml/vrml_parser.h"
@@ -15,12 +16,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::shared_ptr<vrml::SourceFile> sourceFile(const fs::path& path, const fs::path& dir, std::string displayName) {
+std::shared_ptr<vrml::SourceFile> sourceFile(const fs::path& path, const fs::path& dir, std::string displayName,
+                                             std::vector<fs::path> folders) {
   auto file = std::make_shared<vrml::SourceFile>();
   file->path = path;
   file->dir = dir;
   file->displayName = std::move(displayName);
+  file->folders = std::move(folders);
   return file;
+}
+
+// The folders a model's urls may lead into: its own and those a person named.
+std::vector<fs::path> modelFolders(const fs::path& dir, const std::vector<fs::path>& extraFolders) {
+  std::vector<fs::path> folders{dir.empty() ? fs::path(".") : dir};
+  folders.insert(folders.end(), extraFolders.begin(), extraFolders.end());
+  return folders;
 }
 
 Result<vrml::Document> parseBytes(std::string_view bytes, std::shared_ptr<vrml::SourceFile> file,
@@ -37,27 +47,11 @@ Result<vrml::Document> parseBytes(std::string_view bytes, std::shared_ptr<vrml::
   return vrml::parseDocument(bytes, std::move(file), diagnostics);
 }
 
-// The file's bytes in one read into a buffer of its size (models are tens of MB;
-// a stream copy would double the time to get them).
-Result<std::string> readWholeFile(const fs::path& path) {
-  std::error_code ec;
-  const auto size = fs::file_size(path, ec);
-  if (ec || !fs::is_regular_file(path, ec)) return readFile(path);  // its messages name the problem
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) return readFile(path);
-  std::string bytes(static_cast<size_t>(size), '\0');
-  const size_t got = std::fread(bytes.data(), 1, bytes.size(), file);
-  const bool failed = std::ferror(file) != 0;
-  std::fclose(file);
-  if (failed) return makeError(path.string() + ": read failed");
-  bytes.resize(got);
-  return bytes;
-}
-
 // Loads files from disk for the main file, Inlines and EXTERNPROTOs, each once.
 class FileLoader final : public vrml::DocumentLoader {
  public:
-  explicit FileLoader(Diagnostics* diagnostics) : diagnostics_(diagnostics) {}
+  FileLoader(Diagnostics* diagnostics, std::vector<fs::path> folders)
+      : diagnostics_(diagnostics), folders_(std::move(folders)) {}
 
   Result<std::shared_ptr<vrml::Document>> load(const fs::path& path) override {
     std::error_code ec;
@@ -65,13 +59,9 @@ class FileLoader final : public vrml::DocumentLoader {
     const std::string key = ec ? path.string() : canonical.string();
     auto cached = cache_.find(key);
     if (cached != cache_.end()) return cached->second;
-    if (fs::is_regular_file(path, ec) && fs::file_size(path, ec) > kMaxVrmlBytes) {
-      return makeError(path.string() + ": larger than " + std::to_string(kMaxVrmlBytes >> 20) +
-                       " MiB; photowalk refuses it");
-    }
-    auto bytes = readWholeFile(path);
+    auto bytes = readInputFile(path, kModelInput);
     if (!bytes) return bytes.error();
-    auto document = parseBytes(*bytes, sourceFile(path, path.parent_path(), path.string()), diagnostics_);
+    auto document = parseBytes(*bytes, sourceFile(path, path.parent_path(), path.string(), folders_), diagnostics_);
     if (!document) return document.error();
     auto shared = std::make_shared<vrml::Document>(std::move(*document));
     cache_.emplace(key, shared);
@@ -80,6 +70,7 @@ class FileLoader final : public vrml::DocumentLoader {
 
  private:
   Diagnostics* diagnostics_;
+  std::vector<fs::path> folders_;  // every file it loads keeps the opened model's
   std::unordered_map<std::string, std::shared_ptr<vrml::Document>> cache_;
 };
 
@@ -87,6 +78,7 @@ class FileLoader final : public vrml::DocumentLoader {
 ImageLoader detailLoader(const fs::path& dir) {
   return [dir](const std::string& url) -> std::shared_ptr<const Image> {
     if (url.find("://") != std::string::npos) return nullptr;
+    if (!insideFolders(dir / fs::path(url), {dir.empty() ? fs::path(".") : dir})) return nullptr;
     auto image = loadImage(dir / fs::path(url));
     return image ? std::make_shared<const Image>(std::move(*image)) : nullptr;
   };
@@ -94,8 +86,8 @@ ImageLoader detailLoader(const fs::path& dir) {
 
 }  // namespace
 
-Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics) {
-  FileLoader loader(diagnostics);
+Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics, const std::vector<fs::path>& extraFolders) {
+  FileLoader loader(diagnostics, modelFolders(path.parent_path(), extraFolders));
   auto document = loader.load(path);
   if (!document) return document.error();
   auto scene = vrml::buildScene(*document, loader, diagnostics);
@@ -104,10 +96,11 @@ Result<Scene> readVrml(const fs::path& path, Diagnostics* diagnostics) {
 }
 
 Result<Scene> readVrmlString(std::string_view text, const fs::path& baseDir, Diagnostics* diagnostics,
-                             std::string_view nameForMessages) {
-  auto document = parseBytes(text, sourceFile({}, baseDir, std::string(nameForMessages)), diagnostics);
+                             std::string_view nameForMessages, const std::vector<fs::path>& extraFolders) {
+  const std::vector<fs::path> folders = modelFolders(baseDir, extraFolders);
+  auto document = parseBytes(text, sourceFile({}, baseDir, std::string(nameForMessages), folders), diagnostics);
   if (!document) return document.error();
-  FileLoader loader(diagnostics);
+  FileLoader loader(diagnostics, folders);
   auto scene = vrml::buildScene(std::make_shared<vrml::Document>(std::move(*document)), loader, diagnostics);
   if (scene) takeModelInfo(*scene, detailLoader(baseDir));
   return scene;

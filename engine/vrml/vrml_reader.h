@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <string_view>
+#include <vector>
 
 #include "base/result.h"
 #include "engine/scene/scene.h"
@@ -21,11 +22,15 @@ namespace pw::engine {
 // needed to hold its nodes).
 inline constexpr size_t kMaxVrmlBytes = size_t{1} << 30;
 
-Result<Scene> readVrml(const std::filesystem::path& path, Diagnostics* diagnostics);
+// Its Inlines, textures and EXTERNPROTOs are read only from inside the model's folder
+// and `extraFolders` (README: What photowalk reads); others are skipped with a warning.
+Result<Scene> readVrml(const std::filesystem::path& path, Diagnostics* diagnostics,
+                       const std::vector<std::filesystem::path>& extraFolders = {});
 
 // The same for text in memory (which may be gzip data). Relative urls resolve against
-// `baseDir`; `nameForMessages` stands for the file name in errors.
+// `baseDir` (and stay inside it); `nameForMessages` stands for the file name in errors.
 Result<Scene> readVrmlString(std::string_view text, const std::filesystem::path& baseDir, Diagnostics* diagnostics,
-                             std::string_view nameForMessages = "<string>");
+                             std::string_view nameForMessages = "<string>",
+                             const std::vector<std::filesystem::path>& extraFolders = {});
 
 }  // namespace pw::engine

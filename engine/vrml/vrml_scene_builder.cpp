@@ -159,7 +159,7 @@ const Proto* Builder::resolveExternProto(const Proto& proto) {
     const std::string name = hash == std::string::npos ? proto.interface.name : url.substr(hash + 1);
     std::string whyNot;
     const auto path = file.empty() ? std::optional<fs::path>(proto.file->path)
-                                   : localPath(file, proto.file ? proto.file->dir : fs::path(), whyNot);
+                                   : localPath(file, proto.file, whyNot);
     if (!path) {
       reasons += (reasons.empty() ? "" : "; ") + whyNot;
       continue;
@@ -275,7 +275,7 @@ void Builder::addInline(const Node& node, const Visit& item) {
   std::string reasons;
   for (const std::string& url : urls) {
     std::string whyNot;
-    const auto path = localPath(url, node.file ? node.file->dir : fs::path(), whyNot);
+    const auto path = localPath(url, node.file, whyNot);
     if (!path) {
       reasons += (reasons.empty() ? "" : "; ") + whyNot;
       continue;

@@ -13,6 +13,7 @@
 #include <stb_truetype.h>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 #include "engine/vrml/vrml_fields.h"
 
 namespace pw::engine::vrml {
@@ -31,7 +32,7 @@ std::shared_ptr<const std::string> fontBytes(const fs::path& path) {
   static std::map<fs::path, std::shared_ptr<const std::string>> cache;
   std::lock_guard lock(mutex);
   if (auto found = cache.find(path); found != cache.end()) return found->second;
-  auto bytes = readFile(path);
+  auto bytes = readInputFile(path, kFontInput);
   std::shared_ptr<const std::string> result = bytes ? std::make_shared<const std::string>(std::move(*bytes)) : nullptr;
   cache.emplace(path, result);
   return result;

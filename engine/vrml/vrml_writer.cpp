@@ -6,6 +6,8 @@
 #include <unordered_set>
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
+#include "base/staging.h"
 #include "engine/scene/model_info.h"
 #include "engine/scene/texture_detail.h"
 #include "engine/vrml/gzip.h"
@@ -471,6 +473,33 @@ bool endsWith(std::string s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+// The strings the model now at `out` quotes (its urls among them), and the detail
+// layers named after them: the files this writer wrote beside it before, which a new
+// model of that name may replace. Nothing when there is no model there (or it cannot
+// be read).
+std::unordered_set<std::string> quotedInPreviousModel(const fs::path& out, bool gz) {
+  std::unordered_set<std::string> quoted;
+  auto bytes = readInputFile(out, kModelInput);
+  if (!bytes) return quoted;
+  std::string text = std::move(*bytes);
+  if (gz || isGzip(text)) {
+    auto plain = gunzip(text, out.string(), kModelInput.maxBytes);
+    if (!plain) return quoted;
+    text = std::move(*plain);
+  }
+  for (size_t open = text.find('"'); open != std::string::npos;) {
+    const size_t close = text.find('"', open + 1);
+    if (close == std::string::npos) break;
+    if (close - open - 1 <= 4096) {
+      const std::string url = text.substr(open + 1, close - open - 1);
+      quoted.insert(url);
+      quoted.insert(detailUrl(url));  // a texture's detail layer is named after it, not quoted
+    }
+    open = text.find('"', close + 1);
+  }
+  return quoted;
+}
+
 }  // namespace
 
 Result<std::string> vrmlText(const Scene& scene, const VrmlWriteOptions& options,
@@ -486,6 +515,23 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
   // One file per distinct image, named after the output and the texture's own url.
   std::unordered_map<const Image*, std::string> urls;
   std::unordered_set<std::string> taken;
+  // A name is free unless another texture has it or a file this writer did not write
+  // (one the model now at `out` does not name) is there: never write over a person's file.
+  // The model at `out` and those of its other VRML names (OUTSTEM.wrl, .wrz, .wrl.gz:
+  // they share the textures' names) say which files are photowalk's.
+  std::unordered_set<std::string> ours;
+  for (const std::string& sibling : {name, outStem + ".wrl", outStem + ".wrz", outStem + ".wrl.gz"}) {
+    std::error_code existsEc;
+    const fs::path model = out.parent_path() / sibling;
+    if (!fs::is_regular_file(model, existsEc)) continue;
+    const auto quoted = quotedInPreviousModel(model, sibling != outStem + ".wrl");
+    ours.insert(quoted.begin(), quoted.end());
+  }
+  const auto nameFree = [&](const std::string& file) {
+    if (taken.count(file)) return false;
+    std::error_code ec;
+    return options.overwriteForeignFiles || ours.count(file) || !fs::exists(out.parent_path() / file, ec);
+  };
   const char* extension = options.jpegTextures ? ".jpg" : ".png";
   for (const Shape& s : scene.shapes) {
     if (!s.appearance || !s.appearance->texture || !s.appearance->texture->image) continue;
@@ -499,8 +545,10 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     // Grey (intensity) textures stay PNG: a JPEG would come back in colour, replacing
     // the material's colour instead of modulating it.
     const char* ext = t.image->grey ? ".png" : extension;
+    const bool detail = t.sourceFromTexCoord && hasDetail(t);
+    const auto usable = [&](const std::string& name) { return nameFree(name) && (!detail || nameFree(detailUrl(name))); };
     std::string file = base + ext;
-    for (int k = 2; taken.count(file); ++k) file = base + "_" + std::to_string(k) + ext;
+    for (int k = 2; !usable(file); ++k) file = base + "_" + std::to_string(k) + ext;
     taken.insert(file);
     urls.emplace(t.image.get(), file);
   }
@@ -520,24 +568,24 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     if (!compressed) return makeError(out.string() + ": " + compressed.message());
     text = std::move(*compressed);
   }
-  // The textures go first, the model that names them last. When a texture or the model
-  // cannot be written, the textures this call created are removed again, so that a
-  // failed write leaves no part of a model behind (one that was there before stays).
-  std::vector<fs::path> created;
-  const auto undo = [&](Status failed) {
-    std::error_code ec;
-    for (const fs::path& path : created) fs::remove(path, ec);
-    return failed;
-  };
+  // The model and its textures are written into a hidden folder beside `out` and moved
+  // into place only when all are whole, the textures first, the model that names them
+  // last: a failed (or killed) write leaves the previous model as it was, and the next
+  // write removes what a killed one left (base/staging.h).
+  auto staged = StagedFiles::create(out.parent_path(), name);
+  if (!staged) return makeError(out.string() + ": " + staged.message());
+  std::vector<std::string> order;
   for (const auto& [image, file] : urls) {
-    const fs::path path = out.parent_path() / file;
-    std::error_code ec;
-    const bool existed = fs::exists(path, ec);
-    if (Status saved = saveImage(path, *image); !saved) return undo(saved);
-    if (!existed) created.push_back(path);
+    if (Status saved = saveImage(staged->pathFor(file), *image); !saved) {
+      return makeError((out.parent_path() / file).string() + ": " + saved.message());
+    }
+    order.push_back(file);
   }
-  if (Status written = writeFileAtomic(out, *text); !written) return undo(written);
-  return {};
+  if (Status written = writeFileAtomic(staged->pathFor(name), *text); !written) {
+    return makeError(out.string() + ": " + written.message());
+  }
+  order.push_back(name);
+  return staged->commit(order);
 }
 
 }  // namespace pw::engine

@@ -19,13 +19,20 @@ namespace pw::engine {
 struct VrmlWriteOptions {
   bool jpegTextures = false;  // write textures as JPEG (quality 92) instead of PNG
   std::string title;          // WorldInfo title; empty: the scene's own title
+  // A texture's file name taken by a file that neither the model now at `out` nor one
+  // of its other VRML names (OUTSTEM.wrl, .wrz, .wrl.gz) names (a person's own
+  // m_s_floor.png) is not written over: the texture gets a free name
+  // (m_s_floor_2.png). True (build --force): such files are replaced.
+  bool overwriteForeignFiles = false;
 };
 
 // Writes `out` (.wrl, or gzip-compressed when it ends in .gz or .wrz) atomically, and
 // each distinct texture image beside it as OUTSTEM_NAME.png (or .jpg), referenced by a
 // relative url. Fails, writing nothing, on a scene that is not well formed (an index
-// out of range, attribute arrays of the wrong length, a non-finite number); when a
-// texture or `out` cannot be written, removes the textures it had created.
+// out of range, attribute arrays of the wrong length, a non-finite number). All files
+// are written into a hidden folder beside `out` first and moved into place once whole
+// (base/staging.h): when one cannot be written, none of them appears and the previous
+// model stays as it was.
 Status writeVrml(const Scene& scene, const std::filesystem::path& out, const VrmlWriteOptions& options = {});
 
 // The VRML97 text of a scene. `imageUrls` gives the url written for each texture image

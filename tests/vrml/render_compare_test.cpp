@@ -109,7 +109,7 @@ TEST(VrmlRender, RendersMatchViewerScreenshotSilhouettes) {
     SCOPED_TRACE(name);
     auto reference = loadImage(referencePath);
     ASSERT_TRUE(reference.ok()) << reference.message();
-    auto scene = readVrml(file, nullptr);
+    auto scene = readVrml(file, nullptr, samplesFolders());
     ASSERT_TRUE(scene.ok()) << scene.message();
     const Viewpoint viewpoint = scene->viewpoints.empty() ? castleDefaultViewpoint(*scene) : scene->viewpoints[0];
     ASSERT_TRUE((*renderer)->setScene(*scene).ok());
@@ -154,7 +154,8 @@ TEST(VrmlRender, PhotowalkRenderDrawsEverySample) {
     const fs::path out = outDir / (sample.filename().string() + ".png");
     fs::remove(out);
     const std::string command = std::string("PW_VALIDATION=1 '") + PW_PHOTOWALK + "' render '" + sample.string() +
-                                "' -o '" + out.string() + "' --size 320x180 --cpu > '" + out.string() + ".log' 2>&1";
+                                "' -o '" + out.string() + "' --allow-folder '" + samplesFolders().front().string() +
+                                "' --size 320x180 --cpu > '" + out.string() + ".log' 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     auto image = loadImage(out);
     ASSERT_TRUE(image.ok()) << image.message();

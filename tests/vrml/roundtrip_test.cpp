@@ -38,7 +38,7 @@ TEST(VrmlRoundTrip, EverySampleReadsBackExactly) {
   ASSERT_FALSE(samples.empty()) << "no samples in " PW_TEST_DATA_DIR "/vrml-samples";
   for (const fs::path& sample : samples) {
     SCOPED_TRACE(sample.string());
-    auto scene = readVrml(sample, nullptr);
+    auto scene = readVrml(sample, nullptr, samplesFolders());
     ASSERT_TRUE(scene.ok()) << scene.message();
     expectRoundTrip(*scene, sample.stem().string());
   }

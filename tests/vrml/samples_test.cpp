@@ -29,7 +29,7 @@ TEST(VrmlSamples, EveryVrml97SampleLoads) {
   for (const auto& sample : samples) {
     SCOPED_TRACE(sample.string());
     Diagnostics d;
-    auto scene = readVrml(sample, &d);
+    auto scene = readVrml(sample, &d, samplesFolders());
     ASSERT_TRUE(scene.ok()) << scene.message();
     ++loaded;
     auto count = expected.find(sample.filename().string());
@@ -51,7 +51,7 @@ TEST(VrmlSamples, TexturedSamplesFindTheirImagesThroughRelativeUrls) {
     const std::string name = sample.filename().string();
     if (name != "texture_test.wrl" && name != "deranged_house.wrl" && name != "kings_head.wrl") continue;
     Diagnostics d;
-    auto scene = readVrml(sample, &d);
+    auto scene = readVrml(sample, &d, samplesFolders());
     ASSERT_TRUE(scene.ok()) << scene.message();
     EXPECT_TRUE(scene->shapes[0].appearance && scene->shapes[0].appearance->texture) << name;
     EXPECT_EQ(d.format().find("no loadable image"), std::string::npos) << d.format();

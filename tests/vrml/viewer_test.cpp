@@ -190,7 +190,7 @@ TEST(VrmlViewer, WrittenFilesLoadInView3dsceneWithoutWarnings) {
   std::vector<Written> written;
   int index = 0;
   for (const fs::path& sample : vrmlSamples()) {
-    auto scene = readVrml(sample, nullptr);
+    auto scene = readVrml(sample, nullptr, samplesFolders());
     ASSERT_TRUE(scene.ok()) << scene.message();
     // One folder per file, so that texture names never collide.
     const fs::path dir = root / std::to_string(index++);

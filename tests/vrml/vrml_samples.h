@@ -9,6 +9,10 @@
 
 namespace pw::engine {
 
+// The samples share a textures folder beside theirs ("../textures/x.png"): the folder a
+// reader is told it may read besides a model's own (README: What photowalk reads).
+inline std::vector<std::filesystem::path> samplesFolders() { return {PW_TEST_DATA_DIR "/vrml-samples"}; }
+
 // Every .wrl / .wrl.gz under the samples folder whose content is VRML97 (plain text
 // starting with "#VRML V2.0", or gzip data).
 inline std::vector<std::filesystem::path> vrmlSamples() {

@@ -1,0 +1,135 @@
+#include "base/staging.h"
+
+#include <chrono>
+#include <fstream>
+#include <random>
+#include <thread>
+#include <sstream>
+
+namespace pw {
+namespace fs = std::filesystem;
+
+std::string processIdText() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self", ec);  // "/proc/self" -> "12345"
+  return ec ? std::string("0") : self.filename().string();
+}
+
+void removeStaleTemporaries(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  const fs::path where = folder.empty() ? fs::path(".") : folder;
+  for (fs::directory_iterator it(where, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    size_t digits = prefix.size();
+    while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
+    if (digits == prefix.size() || digits == name.size() || (name[digits] != '-' && name[digits] != '.')) continue;
+    const std::string pid = name.substr(prefix.size(), digits - prefix.size());
+    std::error_code procEc;
+    if (pid == processIdText() || fs::exists(fs::path("/proc") / pid, procEc)) continue;  // still running
+    std::error_code removeEc;
+    fs::remove_all(it->path(), removeEc);
+  }
+}
+
+Result<StagedFiles> StagedFiles::create(const fs::path& destination, const std::string& name) {
+  const fs::path where = destination.empty() ? fs::path(".") : destination;
+  std::error_code existsEc;
+  if (!fs::exists(where, existsEc)) return makeError("the folder " + where.string() + " does not exist");
+  const std::string prefix = "." + name + ".photowalk-";
+  removeStaleTemporaries(where, prefix);
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    std::ostringstream folderName;
+    folderName << prefix << processIdText() << "-" << std::hex << (rng() & 0xffffff);
+    const fs::path folder = where / folderName.str();
+    std::error_code ec;
+    if (fs::create_directory(folder, ec)) return StagedFiles(where, folder);
+    if (ec) return makeError(where.string() + ": cannot write here: " + ec.message());
+  }
+  return makeError(where.string() + ": cannot make a temporary folder");
+}
+
+StagedFiles::StagedFiles(StagedFiles&& other) noexcept
+    : destination_(std::move(other.destination_)), folder_(std::move(other.folder_)) {
+  other.folder_.clear();
+}
+
+StagedFiles::~StagedFiles() {
+  if (folder_.empty()) return;
+  std::error_code ec;
+  fs::remove_all(folder_, ec);
+}
+
+namespace {
+
+// One commit at a time into one destination under one name: the lock is a folder
+// (mkdir is atomic) holding an empty file named after its process. A lock whose
+// process is gone (killed during its renames) is taken over.
+class CommitLock {
+ public:
+  static Result<CommitLock> acquire(const fs::path& destination, const std::string& name) {
+    const fs::path lock = destination / ("." + name + ".photowalk-lock");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < deadline) {
+      std::error_code ec;
+      if (fs::create_directory(lock, ec)) {
+        std::ofstream(lock / processIdText()).close();
+        return CommitLock(lock);
+      }
+      if (ec) return makeError(destination.string() + ": cannot write here: " + ec.message());
+      // Held: by a process that still runs? (A lock just made may not name it yet.)
+      bool holderRuns = false, named = false;
+      for (fs::directory_iterator it(lock, ec), end; !ec && it != end; it.increment(ec)) {
+        named = true;
+        std::error_code procEc;
+        holderRuns = holderRuns || fs::exists(fs::path("/proc") / it->path().filename(), procEc);
+      }
+      std::error_code timeEc;
+      const auto age = fs::file_time_type::clock::now() - fs::last_write_time(lock, timeEc);
+      if (!timeEc && !holderRuns && (named || age > std::chrono::seconds(2))) {
+        fs::remove_all(lock, ec);  // its process was killed
+        continue;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return makeError((destination / name).string() + ": another photowalk has been writing it for 30 s; nothing was written");
+  }
+  CommitLock(CommitLock&& other) noexcept : path_(std::move(other.path_)) { other.path_.clear(); }
+  CommitLock(const CommitLock&) = delete;
+  CommitLock& operator=(const CommitLock&) = delete;
+  CommitLock& operator=(CommitLock&&) = delete;
+  ~CommitLock() {
+    if (path_.empty()) return;
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+
+ private:
+  explicit CommitLock(fs::path path) : path_(std::move(path)) {}
+  fs::path path_;
+};
+
+}  // namespace
+
+Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
+  std::error_code ec;
+  for (const std::string& name : fileNames) {
+    if (!fs::is_regular_file(folder_ / name, ec)) return makeError((destination_ / name).string() + ": nothing was written");
+    // What would make a rename fail half-way through, seen before the first one.
+    if (fs::is_directory(destination_ / name, ec)) {
+      return makeError((destination_ / name).string() + ": cannot write: Is a directory");
+    }
+  }
+  // Two writers of one model: each moves all its files in while it holds the lock, so
+  // the last one wins whole, never a mix of both.
+  auto lock = CommitLock::acquire(destination_, fileNames.empty() ? std::string("files") : fileNames.back());
+  if (!lock) return lock.error();
+  for (const std::string& name : fileNames) {
+    fs::rename(folder_ / name, destination_ / name, ec);
+    if (ec) return makeError((destination_ / name).string() + ": cannot write: " + ec.message());
+  }
+  return {};
+}
+
+}  // namespace pw

@@ -1,0 +1,49 @@
+// Files that appear together or not at all: a model and its textures are written into
+// a hidden folder beside their destination and moved into place only once every one
+// of them is whole. A failed or killed run leaves the previous files as they were; the
+// folder of a killed run (its process gone) is removed by the next run that writes
+// there. Standard library only (Linux: a process's id from /proc).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "base/result.h"
+
+namespace pw {
+
+// This process's id, as text ("12345").
+std::string processIdText();
+
+// Removes the entries of `folder` named PREFIX + PID + "-..." (or PREFIX + PID + "."...)
+// whose process no longer runs: what a killed run of this program left.
+void removeStaleTemporaries(const std::filesystem::path& folder, const std::string& prefix);
+
+class StagedFiles {
+ public:
+  // A fresh hidden folder ".NAME.photowalk-PID-RANDOM" in `destination` (which must
+  // exist), after removing those of killed runs.
+  static Result<StagedFiles> create(const std::filesystem::path& destination, const std::string& name);
+
+  StagedFiles(StagedFiles&& other) noexcept;
+  StagedFiles& operator=(StagedFiles&&) = delete;
+  StagedFiles(const StagedFiles&) = delete;
+  ~StagedFiles();  // removes the folder and whatever is still in it
+
+  // Where to write the file that will be `destination/fileName`.
+  std::filesystem::path pathFor(const std::string& fileName) const { return folder_ / fileName; }
+
+  // Moves the files into the destination in this order (the file that names the
+  // others last), each by one rename, holding a lock (a hidden folder named after the
+  // last file) so that two writers of one model do not interleave: the last wins
+  // whole. A file missing from the folder is an error and nothing is moved.
+  Status commit(const std::vector<std::string>& fileNames);
+
+ private:
+  StagedFiles(std::filesystem::path destination, std::filesystem::path folder)
+      : destination_(std::move(destination)), folder_(std::move(folder)) {}
+  std::filesystem::path destination_, folder_;
+};
+
+}  // namespace pw

@@ -1,0 +1,82 @@
+// base/staging.h: files that appear together, and what killed runs leave removed.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "base/staging.h"
+
+namespace pw {
+namespace {
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class StagingTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("pw_staging_test_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  size_t entries() const { return static_cast<size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator())); }
+  fs::path dir_;
+};
+
+TEST_F(StagingTest, FilesAppearOnlyOnCommitAndTheFolderGoes) {
+  std::ofstream(dir_ / "m.wrl") << "old model";
+  {
+    auto staged = StagedFiles::create(dir_, "m.wrl");
+    ASSERT_TRUE(staged) << staged.message();
+    std::ofstream(staged->pathFor("m_a.png")) << "texture";
+    std::ofstream(staged->pathFor("m.wrl")) << "new model";
+    EXPECT_EQ(readText(dir_ / "m.wrl"), "old model");
+    EXPECT_FALSE(fs::exists(dir_ / "m_a.png"));
+    ASSERT_TRUE(staged->commit({"m_a.png", "m.wrl"}));
+  }
+  EXPECT_EQ(readText(dir_ / "m.wrl"), "new model");
+  EXPECT_EQ(readText(dir_ / "m_a.png"), "texture");
+  EXPECT_EQ(entries(), 2u);  // no staging folder, no lock
+}
+
+TEST_F(StagingTest, AFailedWriteLeavesNothing) {
+  {
+    auto staged = StagedFiles::create(dir_, "m.wrl");
+    ASSERT_TRUE(staged);
+    std::ofstream(staged->pathFor("m_a.png")) << "texture";
+    EXPECT_FALSE(staged->commit({"m_a.png", "m.wrl"}));  // the model was never written
+  }
+  EXPECT_EQ(entries(), 0u);
+}
+
+TEST_F(StagingTest, WhatAKilledRunLeftIsRemoved) {
+  // A process id that cannot run (above Linux's pid_max), and this process's own.
+  fs::create_directories(dir_ / ".m.wrl.photowalk-999999999-abc");
+  fs::create_directories(dir_ / (".m.wrl.photowalk-" + processIdText() + "-def"));
+  std::ofstream(dir_ / ".m_a.tmp-999999999-12.png") << "half";
+  fs::create_directories(dir_ / ".m.wrl.photowalk-lock");
+  std::ofstream(dir_ / ".m.wrl.photowalk-lock" / "999999999").close();
+  removeStaleTemporaries(dir_, ".m_a.tmp-");
+  EXPECT_FALSE(fs::exists(dir_ / ".m_a.tmp-999999999-12.png"));
+  auto staged = StagedFiles::create(dir_, "m.wrl");
+  ASSERT_TRUE(staged);
+  EXPECT_FALSE(fs::exists(dir_ / ".m.wrl.photowalk-999999999-abc"));
+  EXPECT_TRUE(fs::exists(dir_ / (".m.wrl.photowalk-" + processIdText() + "-def"))) << "a running process's is kept";
+  std::ofstream(staged->pathFor("m.wrl")) << "model";
+  // The lock a killed run held is taken over.
+  EXPECT_TRUE(staged->commit({"m.wrl"}));
+  EXPECT_FALSE(fs::exists(dir_ / ".m.wrl.photowalk-lock"));
+}
+
+}  // namespace
+}  // namespace pw
