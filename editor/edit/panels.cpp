@@ -170,8 +170,8 @@ void EditMode::drawMeasurement() {
   const metrology::VanishingPoint& vp = m.vanishing.corridor;
   ImGui::Text("vanishing point (%.1f, %.1f) px", vp.px.x, vp.px.y);
   ImGui::Text("  residual %.2f px", vp.residualPx);
-  ImGui::Text("yaw %.2f\xc2\xb0  pitch %.2f\xc2\xb0", m.pose.yawDeg, m.pose.pitchDeg);
-  ImGui::Text("roll %.2f\xc2\xb0", m.pose.rollDeg);
+  // One line for the three angles: the panel keeps the Camera fields above the fold.
+  ImGui::Text("yaw %.2f\xc2\xb0 pitch %.2f\xc2\xb0 roll %.2f\xc2\xb0", m.pose.yawDeg, m.pose.pitchDeg, m.pose.rollDeg);
   ImGui::Text("camera at (%.2f, %.2f, %.2f) m", m.pose.positionM.x, m.pose.positionM.y, m.pose.positionM.z);
   ImGui::Text("reprojection error %.2f px RMS", m.reprojectionRmsPx);
   if (m.reference) {
