@@ -260,17 +260,26 @@ std::map<std::string, std::string> modelFiles(const std::map<std::string, std::s
   return model;
 }
 
+// Shot B beside shot A: A's text with another focal length (other textures, not only
+// another scale), as b/s.json (so that both models name their textures m_s_*), its
+// photo A's. Returns B's text as it would read beside A's photo.
+std::string writeShotB(const fs::path& shotA) {
+  std::string text = readText(shotA);
+  text.replace(text.find("914.014724"), 10, "860.000000");
+  const fs::path folder = shotA.parent_path() / "b";
+  fs::create_directories(folder);
+  std::string shotB = text;
+  shotB.replace(shotB.find("\"corridor.png\""), 14, "\"../corridor.png\"");
+  writeText(folder / "s.json", shotB);
+  return text;
+}
+
 TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind) {
   // Model A in place; builds of B (another focal length: other textures, not only
   // another scale) killed at moments spread over a build's run.
   // Both shots are s.json, so that both models name their textures m_s_*.
   const fs::path shotA = sampleShot("s.json");
-  std::string text = readText(shotA);
-  text.replace(text.find("914.014724"), 10, "860.000000");
-  fs::create_directories(dir_ / "b");
-  std::string shotB = text;
-  shotB.replace(shotB.find("\"corridor.png\""), 14, "\"../corridor.png\"");
-  writeText(dir_ / "b" / "s.json", shotB);
+  const std::string text = writeShotB(shotA);
   ASSERT_EQ(photowalk("build " + quoted(shotA) + " -o " + quoted(dir_ / "m.wrl"), 300).exitCode, 0);
   const auto modelA = modelFiles(snapshot(dir_));
   // B whole, for comparison, in a folder of its own.
@@ -310,12 +319,7 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
 TEST_F(HostileInput, TwoBuildsToOneOutputLeaveOneModelWhole) {
   // Shots A and B (another focal length), both s.json: their models name the same files.
   const fs::path shotA = sampleShot("s.json");
-  std::string text = readText(shotA);
-  text.replace(text.find("914.014724"), 10, "860.000000");
-  fs::create_directories(dir_ / "b");
-  std::string shotB = text;
-  shotB.replace(shotB.find("\"corridor.png\""), 14, "\"../corridor.png\"");
-  writeText(dir_ / "b" / "s.json", shotB);
+  const std::string text = writeShotB(shotA);
   const fs::path out = dir_ / "out";
   fs::create_directories(out);
   const auto modelOf = [&](const fs::path& shot) {
