@@ -260,6 +260,15 @@ std::map<std::string, std::string> modelFiles(const std::map<std::string, std::s
   return model;
 }
 
+// Whether `files` holds every file of `model` with its bytes.
+bool holdsWhole(const std::map<std::string, std::string>& files, const std::map<std::string, std::string>& model) {
+  for (const auto& [name, bytes] : model) {
+    auto found = files.find(name);
+    if (found == files.end() || found->second != bytes) return false;
+  }
+  return true;
+}
+
 // Shot B beside shot A: A's text with another focal length (other textures, not only
 // another scale), as b/s.json (so that both models name their textures m_s_*), its
 // photo A's. Returns B's text as it would read beside A's photo.
@@ -300,14 +309,7 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
                      " -o " + quoted(dir_ / "m.wrl"));
     const auto model = modelFiles(snapshot(dir_));
     // Either model, whole.
-    const auto subset = [&](const std::map<std::string, std::string>& whole) {
-      for (const auto& [name, bytes] : whole) {
-        auto found = model.find(name);
-        if (found == model.end() || found->second != bytes) return false;
-      }
-      return true;
-    };
-    EXPECT_TRUE(model.at("m.wrl") == modelA.at("m.wrl") ? subset(modelA) : subset(modelB))
+    EXPECT_TRUE(model.at("m.wrl") == modelA.at("m.wrl") ? holdsWhole(model, modelA) : holdsWhole(model, modelB))
         << "trial " << trial << " (killed after " << delayS << " s): a mixed model";
   }
   // A complete build after them leaves no hidden file of a killed one.
@@ -319,7 +321,7 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
 TEST_F(HostileInput, TwoBuildsToOneOutputLeaveOneModelWhole) {
   // Shots A and B (another focal length), both s.json: their models name the same files.
   const fs::path shotA = sampleShot("s.json");
-  const std::string text = writeShotB(shotA);
+  writeShotB(shotA);
   const fs::path out = dir_ / "out";
   fs::create_directories(out);
   const auto modelOf = [&](const fs::path& shot) {
@@ -336,14 +338,7 @@ TEST_F(HostileInput, TwoBuildsToOneOutputLeaveOneModelWhole) {
                                           build + quoted(dir_ / "b" / "s.json") + " -o " + quoted(out / "m.wrl") +
                                           " > /dev/null; wait)");
     const auto model = modelFiles(snapshot(out));
-    const auto whole = [&](const std::map<std::string, std::string>& expected) {
-      for (const auto& [name, bytes] : expected) {
-        auto found = model.find(name);
-        if (found == model.end() || found->second != bytes) return false;
-      }
-      return true;
-    };
-    EXPECT_TRUE(whole(modelA) || whole(modelB)) << "trial " << trial << ": a mixed model";
+    EXPECT_TRUE(holdsWhole(model, modelA) || holdsWhole(model, modelB)) << "trial " << trial << ": a mixed model";
     for (const auto& [name, bytes] : snapshot(out)) EXPECT_NE(name[0], '.') << name << " was left behind";
   }
 }
