@@ -15,6 +15,18 @@ std::string processIdText() {
   return ec ? std::string("0") : self.filename().string();
 }
 
+bool processRuns(const std::string& pid) {
+  // /proc/PID/stat: "PID (COMM) STATE ...". A process killed but not yet reaped (its
+  // parent gone too, as `timeout -s KILL` leaves it) is a zombie: it writes nothing more.
+  std::ifstream stat(fs::path("/proc") / pid / "stat");
+  std::string line;
+  if (!stat || !std::getline(stat, line)) return false;
+  const size_t close = line.rfind(')');
+  if (close == std::string::npos || close + 2 >= line.size()) return true;  // unreadable: assume it runs
+  const char state = line[close + 2];
+  return state != 'Z' && state != 'X' && state != 'x';
+}
+
 void removeStaleTemporaries(const fs::path& folder, const std::string& prefix) {
   std::error_code ec;
   const fs::path where = folder.empty() ? fs::path(".") : folder;
@@ -25,8 +37,7 @@ void removeStaleTemporaries(const fs::path& folder, const std::string& prefix) {
     while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
     if (digits == prefix.size() || digits == name.size() || (name[digits] != '-' && name[digits] != '.')) continue;
     const std::string pid = name.substr(prefix.size(), digits - prefix.size());
-    std::error_code procEc;
-    if (pid == processIdText() || fs::exists(fs::path("/proc") / pid, procEc)) continue;  // still running
+    if (pid == processIdText() || processRuns(pid)) continue;  // still running
     std::error_code removeEc;
     fs::remove_all(it->path(), removeEc);
   }
@@ -82,8 +93,7 @@ class CommitLock {
       bool holderRuns = false, named = false;
       for (fs::directory_iterator it(lock, ec), end; !ec && it != end; it.increment(ec)) {
         named = true;
-        std::error_code procEc;
-        holderRuns = holderRuns || fs::exists(fs::path("/proc") / it->path().filename(), procEc);
+        holderRuns = holderRuns || processRuns(it->path().filename().string());
       }
       std::error_code timeEc;
       const auto age = fs::file_time_type::clock::now() - fs::last_write_time(lock, timeEc);

@@ -16,6 +16,10 @@ namespace pw {
 // This process's id, as text ("12345").
 std::string processIdText();
 
+// Whether the process PID ("12345") still runs: false once it has exited, even while
+// it waits, a zombie, for its parent to collect it.
+bool processRuns(const std::string& pid);
+
 // Removes the entries of `folder` named PREFIX + PID + "-..." (or PREFIX + PID + "."...)
 // whose process no longer runs: what a killed run of this program left.
 void removeStaleTemporaries(const std::filesystem::path& folder, const std::string& prefix);

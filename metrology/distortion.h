@@ -23,6 +23,7 @@ struct RadialDistortion {
   double k1 = 0;
   double k2 = 0;
   bool isNone() const { return k1 == 0 && k2 == 0; }
+  bool operator==(const RadialDistortion&) const = default;
 };
 
 // The functions below take the camera (corridor_frame.h's Intrinsics: focal length,

@@ -46,12 +46,14 @@ struct ReferenceLength {
   int from = P3;
   int to = P4;
   double lengthM = 0;
+  bool operator==(const ReferenceLength&) const = default;
 };
 
 struct FocalLengthMm {
   double focalMm = 0;
   double sensorWidthMm = 0;
   double pixels(int imageWidth) const { return focalMm / sensorWidthMm * imageWidth; }
+  bool operator==(const FocalLengthMm&) const = default;
 };
 
 struct Shot {
@@ -71,6 +73,9 @@ struct Shot {
   // them. Unset: not known (measure may estimate it from the corners, measure.h); set
   // to zero: known to be none.
   std::optional<RadialDistortion> distortion;
+
+  // Every field, the distortion included (an edit of any of them is an edit).
+  bool operator==(const Shot&) const = default;
 
   glm::dvec2 principalPoint() const {
     return principalPointPx.value_or(glm::dvec2((imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5));

@@ -19,7 +19,7 @@ Status Autosave::step(const Document* doc, double stepS) {
     if (writtenFor_) remove(*writtenFor_);
     return {};
   }
-  if (writtenShot_ && writtenFor_ == doc->path() && sameShot(*writtenShot_, doc->shot())) return {};
+  if (writtenShot_ && writtenFor_ == doc->path() && *writtenShot_ == doc->shot()) return {};
   if (Status saved = doc->saveCopy(autosavePath(doc->path())); !saved) {
     const bool first = !failing_;
     failing_ = true;
@@ -63,7 +63,7 @@ Result<std::optional<Shot>> recoverableShot(const Document& doc) {
   recovered.cameraHeightM = read->cameraHeightM;
   recovered.reference = read->reference;
   recovered.cornersPx = read->cornersPx;
-  if (sameShot(recovered, shot)) return std::optional<Shot>();
+  if (recovered == shot) return std::optional<Shot>();
   return std::optional<Shot>(recovered);
 }
 

@@ -100,7 +100,7 @@ void Building::remeasure(const Document* lentShot) {
   for (auto& [shotPath, slot] : shots_) {
     const Document* doc = slot.doc ? &*slot.doc : (lent_ == shotPath ? lentShot : nullptr);
     if (!doc) continue;
-    if (slot.measuredShot && sameShot(*slot.measuredShot, doc->shot())) continue;
+    if (slot.measuredShot && *slot.measuredShot == doc->shot()) continue;
     slot.measuredShot = doc->shot();
     LiveMeasurement live = measureLive(doc->shot(), doc->inputOrigins());
     slot.measurement = live.measurement;
@@ -146,7 +146,7 @@ Result<std::vector<modeling::MeasuredShot>> Building::measuredShots(const Docume
     const Slot* slot = slotOf(int(i));
     const Document* doc = slot && slot->doc ? &*slot->doc : (lent_ == entry.shot ? lentShot : nullptr);
     if (!slot || !doc) return makeError("corridor \"" + entry.name + "\": " + (slot ? slot->error : "no shot"));
-    if (!slot->measurement || !slot->measuredShot || !sameShot(*slot->measuredShot, doc->shot())) {
+    if (!slot->measurement || !slot->measuredShot || *slot->measuredShot != doc->shot()) {
       return makeError("corridor \"" + entry.name + "\": " +
                        (slot->error.empty() ? std::string("not measured yet") : slot->error));
     }

@@ -28,14 +28,6 @@ std::vector<metrology::Shot> shotsOf(const std::vector<modeling::MeasuredShot>& 
   return out;
 }
 
-bool sameShots(const std::vector<metrology::Shot>& a, const std::vector<metrology::Shot>& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (!sameShot(a[i], b[i])) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 engine::Camera overviewCamera(const engine::Bounds& bounds, double aspect, float fieldOfViewRad) {
@@ -83,7 +75,7 @@ void BuildingPreview::update(app::Shell& shell) {
 void BuildingPreview::ask(const modeling::Layout& layout, std::vector<modeling::MeasuredShot> shots, std::string title) {
   if (!worker_) return;
   std::vector<metrology::Shot> plain = shotsOf(shots);
-  if (askedLayout_ && sameLayout(*askedLayout_, layout) && sameShots(askedShots_, plain)) return;
+  if (askedLayout_ && sameLayout(*askedLayout_, layout) && askedShots_ == plain) return;
   askedLayout_ = layout;
   askedShots_ = std::move(plain);
   worker_->request(Request{nextId_++, layout, std::move(shots), std::move(title)});
@@ -96,7 +88,7 @@ void BuildingPreview::cannotBuild(std::string why) {
 }
 
 bool BuildingPreview::showsCurrent(const modeling::Layout& layout, const std::vector<modeling::MeasuredShot>& shots) const {
-  return scene_ && error_.empty() && sameLayout(shownLayout_, layout) && sameShots(shownShots_, shotsOf(shots));
+  return scene_ && error_.empty() && sameLayout(shownLayout_, layout) && shownShots_ == shotsOf(shots);
 }
 
 bool BuildingPreview::busy() const {

@@ -20,21 +20,6 @@ namespace fs = std::filesystem;
 using metrology::kCornerCount;
 using metrology::Shot;
 
-bool sameShot(const Shot& a, const Shot& b) {
-  const auto sameMm = [](const std::optional<metrology::FocalLengthMm>& x, const std::optional<metrology::FocalLengthMm>& y) {
-    if (x.has_value() != y.has_value()) return false;
-    return !x || (x->focalMm == y->focalMm && x->sensorWidthMm == y->sensorWidthMm);
-  };
-  const auto sameReference = [](const std::optional<metrology::ReferenceLength>& x,
-                                const std::optional<metrology::ReferenceLength>& y) {
-    if (x.has_value() != y.has_value()) return false;
-    return !x || (x->from == y->from && x->to == y->to && x->lengthM == y->lengthM);
-  };
-  return a.imagePath == b.imagePath && a.imageWidth == b.imageWidth && a.imageHeight == b.imageHeight &&
-         a.focalPx == b.focalPx && sameMm(a.focalMm, b.focalMm) && a.principalPointPx == b.principalPointPx &&
-         a.cameraHeightM == b.cameraHeightM && a.cornersPx == b.cornersPx && sameReference(a.reference, b.reference);
-}
-
 void History::push(Step step) {
   steps_.resize(next_);
   steps_.push_back(std::move(step));
@@ -233,7 +218,7 @@ Document::FitResult Document::fitCorners(double reachPx) {
     after.cornersPx[k] = detection->corners[k].px;
     largest = std::max(largest, glm::length(after.cornersPx[k] - shot_.cornersPx[k]));
   }
-  if (sameShot(after, shot_)) {
+  if (after == shot_) {
     result.message = "the corners stay where they are: " + joined(detection->doubts);
     return result;
   }
@@ -250,13 +235,13 @@ Document::FitResult Document::fitCorners(double reachPx) {
 }
 
 void Document::apply(const Shot& after, std::string label) {
-  if (sameShot(after, shot_)) return;
+  if (after == shot_) return;
   history_.push({shot_, after, std::move(label)});
   shot_ = after;
 }
 
 void Document::commitLive(const Shot& before, std::string label) {
-  if (sameShot(before, shot_)) return;
+  if (before == shot_) return;
   history_.push({before, shot_, std::move(label)});
 }
 

@@ -24,10 +24,6 @@
 
 namespace pw::edit {
 
-// Exact equality of every field writeShotFile writes (and of the image size): two
-// shots that compare equal save to the same bytes.
-bool sameShot(const metrology::Shot& a, const metrology::Shot& b);
-
 // Undo and redo as whole shots: a shot is a few hundred bytes, so each step keeps the
 // state before and after, and undoing everything then redoing everything restores
 // the very same numbers (hence byte-identical files).
@@ -75,11 +71,11 @@ class Document {
   const std::filesystem::path& path() const { return path_; }  // where save() writes
   // Unsaved changes: the shot differs from the file at path() (always, for a photo
   // never saved).
-  bool dirty() const { return !saved_ || !sameShot(*saved_, shot_); }
+  bool dirty() const { return !saved_ || *saved_ != shot_; }
   // Changes a person would lose by closing now: the shot differs from the file saved,
   // or, for a photo never saved, from what opening it gave (detection's corners,
   // which opening it again gives back). What autosave keeps and closing asks about.
-  bool hasUnsavedEdits() const { return !sameShot(saved_ ? *saved_ : opened_, shot_); }
+  bool hasUnsavedEdits() const { return (saved_ ? *saved_ : opened_) != shot_; }
   // One line each: what opening found or assumed ("corners detected automatically, ...").
   const std::vector<std::string>& notes() const { return notes_; }
   // Per corner, the detection's confidence (0..1), while the corner is where detection

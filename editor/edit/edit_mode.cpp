@@ -434,7 +434,7 @@ void EditMode::remeasure() {
     live_ = {};
     return;
   }
-  if (measuredShot_ && sameShot(*measuredShot_, doc_->shot())) return;
+  if (measuredShot_ && *measuredShot_ == doc_->shot()) return;
   measuredShot_ = doc_->shot();
   live_ = measureLive(*measuredShot_, doc_->inputOrigins(), lastMoved_);
 }

@@ -121,7 +121,7 @@ void Preview::poll(app::Shell& shell, const metrology::Shot& shot) {
 
 void Preview::ask(const metrology::Shot& shot, bool dragging) {
   if (!builder_ || !shown_) return;
-  const bool asked = askedShot_ && sameShot(*askedShot_, shot);
+  const bool asked = askedShot_ && *askedShot_ == shot;
   PreviewBuilder::Request request{nextRequest_, documentId_, shot, photo_, false, false};
   if (dragging) {
     if (asked) return;
@@ -140,7 +140,7 @@ void Preview::ask(const metrology::Shot& shot, bool dragging) {
 
 bool Preview::fullAndCurrent(const metrology::Shot& shot) const {
   return scene_ && builtShot_ && shownDocument_ == documentId_ && builtFrom_ == PreviewResolution::kFull &&
-         sameShot(*builtShot_, shot);
+         *builtShot_ == shot;
 }
 
 Status Preview::waitForFull(app::Shell& shell, const metrology::Shot& shot, bool measurable, double timeoutS) {
@@ -287,7 +287,7 @@ void Preview::drawUi(const WindowRect& toolbar) {
   ImGui::End();
 
   // Why there is no model, or that the one shown is not the corners' as they are, in the pane.
-  const bool stale = haveModel && askedShot_ && builtShot_ && !sameShot(*askedShot_, *builtShot_);
+  const bool stale = haveModel && askedShot_ && builtShot_ && *askedShot_ != *builtShot_;
   const std::string why = !error_.empty() ? "no model: " + error_
                           : !haveModel    ? "the model is being built"
                           : stale         ? "out of date: the corners have moved; the new model is being built"
@@ -317,7 +317,7 @@ ordered_json Preview::trace(const metrology::Shot* shot) const {
   const glm::dvec2 size = rect_.size();
   ordered_json row{{"shown", shown_},
                    {"built_from", haveModel ? ordered_json(resolutionName(builtFrom_)) : ordered_json(nullptr)},
-                   {"current", haveModel && shot && sameShot(*builtShot_, *shot)},
+                   {"current", haveModel && shot && *builtShot_ == *shot},
                    {"building", builder_ && builder_->busy()},
                    {"camera", followPhoto_ ? "photo" : "orbit"},
                    {"rect", ordered_json::array({rect_.min.x, rect_.min.y, size.x, size.y})}};

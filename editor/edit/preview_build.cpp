@@ -51,7 +51,7 @@ bool takesPlaceOf(const PreviewBuilder::Done& done, uint64_t openDocumentId, con
   if (shown && shown->documentId == openDocumentId && order(done.id, done.from) <= order(shown->request, shown->from)) {
     return false;
   }
-  return done.from == PreviewResolution::kReduced || sameShot(done.shot, current);
+  return done.from == PreviewResolution::kReduced || done.shot == current;
 }
 
 const char* resolutionName(PreviewResolution resolution) {

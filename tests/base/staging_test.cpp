@@ -1,4 +1,6 @@
 // base/staging.h: files that appear together, and what killed runs leave removed.
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -76,6 +78,29 @@ TEST_F(StagingTest, WhatAKilledRunLeftIsRemoved) {
   // The lock a killed run held is taken over.
   EXPECT_TRUE(staged->commit({"m.wrl"}));
   EXPECT_FALSE(fs::exists(dir_ / ".m.wrl.photowalk-lock"));
+}
+
+TEST_F(StagingTest, AKilledProcessNotYetCollectedIsNotRunning) {
+  // `timeout -s KILL` dies with the process it kills, which then waits, a zombie, for
+  // someone to collect it: what it left must be removable at once, not after that.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::pause();
+    ::_exit(0);
+  }
+  const std::string pid = std::to_string(child);
+  EXPECT_TRUE(processRuns(pid));
+  ::kill(child, SIGKILL);
+  siginfo_t info{};
+  ASSERT_EQ(::waitid(P_PID, static_cast<id_t>(child), &info, WEXITED | WNOWAIT), 0);  // a zombie: not collected
+  EXPECT_FALSE(processRuns(pid));
+  fs::create_directories(dir_ / (".m.wrl.photowalk-" + pid + "-abc"));
+  removeStaleTemporaries(dir_, ".m.wrl.photowalk-");
+  EXPECT_FALSE(fs::exists(dir_ / (".m.wrl.photowalk-" + pid + "-abc")));
+  ::waitpid(child, nullptr, 0);
+  EXPECT_FALSE(processRuns(pid));
+  EXPECT_TRUE(processRuns(processIdText()));
 }
 
 }  // namespace

@@ -185,6 +185,16 @@ TEST(Document, ShotFileOpensCleanAndSavesWhereItWasRead) {
   EXPECT_TRUE(doc->dirty());
   doc->redo();
   EXPECT_FALSE(doc->dirty());
+
+  // The lens's distortion is an edit like any other: unsaved, undoable (before Shot's
+  // defaulted equality, a distortion typed in was forgotten on close without asking).
+  Shot bent = doc->shot();
+  bent.distortion = metrology::RadialDistortion{-0.05, 0.0};
+  doc->apply(bent, "distortion");
+  EXPECT_TRUE(doc->dirty());
+  EXPECT_TRUE(doc->hasUnsavedEdits());
+  doc->undo();
+  EXPECT_FALSE(doc->dirty());
 }
 
 TEST(Document, UndoEverythingThenRedoEverythingSavesTheSameBytes) {

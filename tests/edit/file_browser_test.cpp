@@ -198,7 +198,7 @@ TEST(Autosave, WritesTheSideFileEveryFewSecondsOfUnsavedEditsAndRemovesItOnceSav
   auto recovered = recoverableShot(*next);
   ASSERT_TRUE(recovered.ok()) << recovered.message();
   ASSERT_TRUE(recovered->has_value());
-  EXPECT_TRUE(sameShot(**recovered, doc->shot()));
+  EXPECT_TRUE(**recovered == doc->shot());
 
   ASSERT_TRUE(doc->save().ok());
   autosave.remove(doc->path());

@@ -40,7 +40,7 @@ std::string quoted(const fs::path& path) {
 
 // photowalk ARGUMENTS, killed after `seconds` (exit 124).
 CommandRun photowalk(const std::string& arguments, int seconds = 60) {
-  return test::runCommand("timeout -s KILL " + std::to_string(seconds) + " " + binary() + " " + arguments);
+  return test::runCommand("timeout --foreground -s KILL " + std::to_string(seconds) + " " + binary() + " " + arguments);
 }
 
 std::string readText(const fs::path& path) {
@@ -305,7 +305,7 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
   constexpr int kTrials = 16;
   for (int trial = 0; trial < kTrials; ++trial) {
     const double delayS = buildS * (0.5 + 0.6 * trial / (kTrials - 1));  // writing is at the end
-    test::runCommand("timeout -s KILL " + std::to_string(delayS) + " " + binary() + " build " + quoted(dir_ / "b" / "s.json") +
+    test::runCommand("timeout --foreground -s KILL " + std::to_string(delayS) + " " + binary() + " build " + quoted(dir_ / "b" / "s.json") +
                      " -o " + quoted(dir_ / "m.wrl"));
     const auto model = modelFiles(snapshot(dir_));
     // Either model, whole.
