@@ -27,20 +27,45 @@ bool processRuns(const std::string& pid) {
   return state != 'Z' && state != 'X' && state != 'x';
 }
 
-void removeStaleTemporaries(const fs::path& folder, const std::string& prefix) {
+void removeStaleTemporaries(const fs::path& folder, const std::string& prefix, const std::string& marker) {
   std::error_code ec;
   const fs::path where = folder.empty() ? fs::path(".") : folder;
   for (fs::directory_iterator it(where, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    size_t digits = prefix.size();
+    size_t start = prefix.size();
+    if (!marker.empty()) {
+      const size_t at = name.find(marker, prefix.size());
+      if (at == std::string::npos) continue;
+      start = at + marker.size();
+    }
+    size_t digits = start;
     while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
-    if (digits == prefix.size() || digits == name.size() || (name[digits] != '-' && name[digits] != '.')) continue;
-    const std::string pid = name.substr(prefix.size(), digits - prefix.size());
+    if (digits == start || digits == name.size() || (name[digits] != '-' && name[digits] != '.')) continue;
+    const std::string pid = name.substr(start, digits - start);
     if (pid == processIdText() || processRuns(pid)) continue;  // still running
     std::error_code removeEc;
     fs::remove_all(it->path(), removeEc);
   }
+}
+
+void removeLeftoversOf(const fs::path& output) {
+  const fs::path folder = output.parent_path();
+  const std::string name = output.filename().string(), stem = output.stem().string();
+  for (const std::string& prefix :
+       {"." + name + ".photowalk-", "." + stem + ".tmp-", "." + stem + ".pending-", "." + stem + ".partial-"}) {
+    removeStaleTemporaries(folder, prefix);
+  }
+  // The commit lock of a run killed during its renames (named after its process; an
+  // unnamed one may be a live writer's, just made: CommitLock takes those over later).
+  std::error_code ec;
+  const fs::path lock = (folder.empty() ? fs::path(".") : folder) / ("." + name + ".photowalk-lock");
+  bool named = false, holderRuns = false;
+  for (fs::directory_iterator it(lock, ec), end; !ec && it != end; it.increment(ec)) {
+    named = true;
+    holderRuns = holderRuns || processRuns(it->path().filename().string());
+  }
+  if (named && !holderRuns) fs::remove_all(lock, ec);
 }
 
 Result<StagedFiles> StagedFiles::create(const fs::path& destination, const std::string& name) {

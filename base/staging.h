@@ -21,8 +21,18 @@ std::string processIdText();
 bool processRuns(const std::string& pid);
 
 // Removes the entries of `folder` named PREFIX + PID + "-..." (or PREFIX + PID + "."...)
-// whose process no longer runs: what a killed run of this program left.
-void removeStaleTemporaries(const std::filesystem::path& folder, const std::string& prefix);
+// whose process no longer runs: what a killed run of this program left. With a
+// `marker`, the names are PREFIX + anything + MARKER + PID + ... (".frame_" and
+// ".tmp-": every frame's temporary file).
+void removeStaleTemporaries(const std::filesystem::path& folder, const std::string& prefix,
+                            const std::string& marker = "");
+
+// What killed runs writing `output` left beside it: the staging folders of a model
+// (".NAME.photowalk-PID-N"), single-file temporaries (".STEM.tmp-PID-N.EXT"), a pending
+// glTF (".STEM.pending-PID.EXT") and a partial video (".STEM.partial-PID.EXT"). A
+// command calls it as it starts, so that a run killed early still finds them gone
+// and a run that gets that far leaves only its own.
+void removeLeftoversOf(const std::filesystem::path& output);
 
 class StagedFiles {
  public:

@@ -337,9 +337,9 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
   if (shot.focalMm) {
     doc["focal_mm"] = shot.focalMm->focalMm;
     doc["sensor_width_mm"] = shot.focalMm->sensorWidthMm;
-  } else {
+  } else if (shot.focalPx > 0) {
     doc["focal_px"] = shot.focalPx;
-  }
+  }  // else none: as it was read (loadShot takes it from the photo's EXIF)
   if (shot.principalPointPx) doc["principal_point"] = {shot.principalPointPx->x, shot.principalPointPx->y};
   if (shot.cameraHeightM) doc["camera_height_m"] = *shot.cameraHeightM;
   if (withCorners) {

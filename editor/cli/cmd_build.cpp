@@ -103,6 +103,10 @@ int runBuild(Args& args) {
     measureOptions.cornerSigmaPx = *v;
   }
 
+  // What runs killed before were writing here goes first, however far this one gets.
+  removeLeftoversOf(*output);
+  if (gltfPath) removeLeftoversOf(*gltfPath);
+
   modeling::Layout layout;
   if (layoutPath) {
     auto read = modeling::readLayoutFile(*layoutPath);

@@ -192,6 +192,10 @@ int runTour(Args& args) {
       return fail(distinct.message());
     }
   }
+  // What runs killed before left goes first, however far this one gets: a partial
+  // video, and the frames' temporary files (".frame_0007.tmp-PID-N.png").
+  if (videoPath) removeLeftoversOf(*videoPath);
+  removeStaleTemporaries(*output, ".frame_", ".tmp-");
   std::vector<std::string> warnings;
   auto scene = engine::loadModel(positionals[0], &warnings, std::vector<fs::path>(allowed.begin(), allowed.end()));
   for (const std::string& w : warnings) printWarning(w);

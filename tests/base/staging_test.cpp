@@ -3,10 +3,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -78,6 +80,33 @@ TEST_F(StagingTest, WhatAKilledRunLeftIsRemoved) {
   // The lock a killed run held is taken over.
   EXPECT_TRUE(staged->commit({"m.wrl"}));
   EXPECT_FALSE(fs::exists(dir_ / ".m.wrl.photowalk-lock"));
+}
+
+TEST_F(StagingTest, ARunStartingRemovesWhatKilledRunsLeftForItsOutput) {
+  // 999999999: above Linux's pid_max, so never a running process.
+  fs::create_directories(dir_ / ".m.wrl.photowalk-999999999-abc" / "m_s_floor.png");
+  std::ofstream(dir_ / ".m.tmp-999999999-12.wrl") << "half";
+  std::ofstream(dir_ / ".m.pending-999999999.glb") << "half";
+  std::ofstream(dir_ / ".m.partial-999999999.avi") << "half";
+  fs::create_directories(dir_ / ".m.wrl.photowalk-lock");
+  std::ofstream(dir_ / ".m.wrl.photowalk-lock" / "999999999").close();
+  // Not this output's, or a running process's: kept.
+  std::ofstream(dir_ / ".other.tmp-999999999-12.wrl") << "another output's";
+  std::ofstream(dir_ / (".m.tmp-" + processIdText() + "-13.wrl")) << "this process's";
+  std::ofstream(dir_ / ".frame_0007.tmp-999999999-1.png") << "half a frame";
+  std::ofstream(dir_ / (".frame_0008.tmp-" + processIdText() + "-1.png")) << "a frame being written";
+  removeLeftoversOf(dir_ / "m.wrl");
+  removeStaleTemporaries(dir_, ".frame_", ".tmp-");
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir_)) left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{".frame_0008.tmp-" + processIdText() + "-1.png",
+                                            ".m.tmp-" + processIdText() + "-13.wrl", ".other.tmp-999999999-12.wrl"}));
+  // A lock held by a running process stays.
+  fs::create_directories(dir_ / ".m.wrl.photowalk-lock");
+  std::ofstream(dir_ / ".m.wrl.photowalk-lock" / processIdText()).close();
+  removeLeftoversOf(dir_ / "m.wrl");
+  EXPECT_TRUE(fs::exists(dir_ / ".m.wrl.photowalk-lock"));
 }
 
 TEST_F(StagingTest, AKilledProcessNotYetCollectedIsNotRunning) {
