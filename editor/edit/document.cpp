@@ -167,23 +167,35 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
                                  : std::nullopt;
     shot.cornersPx = along ? *along : defaultCorners(shot.imageWidth, shot.imageHeight);
     doc.notes_.push_back("no corridor found (" + reason + ")");
-    doc.notes_.push_back(along ? "a starting box along the photo's vanishing points: drag each corner onto the "
-                                 "corridor's"
-                               : "a default box from the image size: drag each corner onto the corridor's");
+    doc.placeholder_ = along ? "a starting box along the photo's vanishing points" : "a default box from the image size";
     if (along && !doc.exifFocal_) shot.focalPx = detection->focalPx;
     if (!doc.exifFocal_ && !(along && detection->focalSource == metrology::detect::FocalSource::kVanishingPoints)) {
       shot.focalPx = metrology::detect::kDefaultFocalOverLongSide * longSide;
       doc.openedFocalSource_ = "default: a 28 mm-equivalent lens";
-      doc.notes_.push_back("focal length assumed " + fixed(shot.focalPx, 0) +
-                           " px (a 28 mm-equivalent lens): set it in the Camera panel");
     }
   }
   doc.openedFocalPx_ = shot.focalPx;
   doc.openedFocalMm_ = shot.focalMm;
-  doc.notes_.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it in the Camera panel");
   doc.opened_ = doc.shot_;
   return doc;
 }
+
+std::vector<std::string> Document::notes() const {
+  std::vector<std::string> notes = notes_;
+  if (isPlaceholderBox()) {
+    notes.push_back(*placeholder_ + ", not the corridor's: no dimensions until its corners are on the corridor's corners");
+  }
+  if (focalSource().rfind("default:", 0) == 0) {
+    notes.push_back("focal length assumed " + fixed(shot_.focalPx, 0) +
+                    " px (a 28 mm-equivalent lens): set it in the Camera panel");
+  }
+  if (inputOrigins().cameraHeightAssumed) {
+    notes.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it in the Camera panel");
+  }
+  return notes;
+}
+
+bool Document::isPlaceholderBox() const { return placeholder_ && shot_.cornersPx == opened_.cornersPx; }
 
 std::optional<double> Document::detectionConfidence(int corner) const {
   if (corner < 0 || corner >= kCornerCount || !confidence_[corner]) return std::nullopt;

@@ -76,8 +76,14 @@ class Document {
   // or, for a photo never saved, from what opening it gave (detection's corners,
   // which opening it again gives back). What autosave keeps and closing asks about.
   bool hasUnsavedEdits() const { return (saved_ ? *saved_ : opened_) != shot_; }
-  // One line each: what opening found or assumed ("corners detected automatically, ...").
-  const std::vector<std::string>& notes() const { return notes_; }
+  // One line each: what opening found, and what is assumed now ("corners detected
+  // automatically, ...", "camera height assumed 1.60 m: ..."): an assumption's note
+  // goes once its value is set and comes back when it is set back to the assumed one.
+  std::vector<std::string> notes() const;
+  // Where no corridor was found, the box opening put there is a placeholder until one
+  // of its corners is moved: it measures nothing a person should be shown, walk in or
+  // export (the editor says so instead).
+  bool isPlaceholderBox() const;
   // Per corner, the detection's confidence (0..1), while the corner is where detection
   // put it; unset for corners from a file, a default box, or moved since.
   std::optional<double> detectionConfidence(int corner) const;
@@ -137,7 +143,8 @@ class Document {
   std::optional<metrology::Shot> saved_;
   metrology::Shot opened_;  // the shot as opening gave it
   cv::Mat photo_;
-  std::vector<std::string> notes_;
+  std::vector<std::string> notes_;  // what opening found (the assumptions' notes are made by notes())
+  std::optional<std::string> placeholder_;  // which placeholder box opening put there, if it did
   std::array<std::optional<double>, metrology::kCornerCount> confidence_{};
   std::array<glm::dvec2, metrology::kCornerCount> detectedPx_{};
   modeling::ExifTags exif_;

@@ -437,6 +437,12 @@ void EditMode::remeasure() {
   if (measuredShot_ && *measuredShot_ == doc_->shot()) return;
   measuredShot_ = doc_->shot();
   live_ = measureLive(*measuredShot_, doc_->inputOrigins(), lastMoved_);
+  if (doc_->isPlaceholderBox()) {
+    // Its numbers would be the placeholder's, not the corridor's: none are shown, and
+    // Walk, Export and the preview say why.
+    live_.measurement.reset();
+    live_.error = "the box is a placeholder (no corridor was detected): drag its corners onto the corridor's corners first";
+  }
 }
 
 void EditMode::update(app::Shell& shell, double stepS) {
@@ -445,7 +451,8 @@ void EditMode::update(app::Shell& shell, double stepS) {
   if (snapWorker_) {
     for (SnapDone& done : snapWorker_->takeDone()) snapShown_ = std::move(done);
   }
-  if (doc_) preview_.update(shell, doc_->shot(), live_.measurement.has_value(), drag_.has_value());
+  if (doc_) preview_.update(shell, doc_->shot(), live_.measurement ? std::string() : live_.error.empty() ? std::string("the corners cannot be measured") : live_.error,
+                              drag_.has_value());
   updateFiles(shell, stepS);
   ++step_;
 }

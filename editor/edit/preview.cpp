@@ -103,14 +103,15 @@ void Preview::setDocument(const cv::Mat& photo) {
   error_.clear();
 }
 
-void Preview::update(app::Shell& shell, const metrology::Shot& shot, bool measurable, bool dragging) {
+void Preview::update(app::Shell& shell, const metrology::Shot& shot, const std::string& unmeasurable, bool dragging) {
   const auto now = std::chrono::steady_clock::now();
   frameIntervalMs_ = lastUpdate_ == std::chrono::steady_clock::time_point{}
                          ? 0.0
                          : std::chrono::duration<double, std::milli>(now - lastUpdate_).count();
   lastUpdate_ = now;
   poll(shell, shot);
-  if (measurable) ask(shot, dragging);
+  unmeasurable_ = unmeasurable;
+  if (unmeasurable.empty()) ask(shot, dragging);
 }
 
 void Preview::poll(app::Shell& shell, const metrology::Shot& shot) {
@@ -289,6 +290,7 @@ void Preview::drawUi(const WindowRect& toolbar) {
   // Why there is no model, or that the one shown is not the corners' as they are, in the pane.
   const bool stale = haveModel && askedShot_ && builtShot_ && *askedShot_ != *builtShot_;
   const std::string why = !error_.empty() ? "no model: " + error_
+                          : !haveModel && !unmeasurable_.empty() ? "no model: " + unmeasurable_
                           : !haveModel    ? "the model is being built"
                           : stale         ? "out of date: the corners have moved; the new model is being built"
                                           : "";

@@ -86,9 +86,10 @@ class Preview {
   const WindowRect& rect() const { return rect_; }
 
   // Once a step: takes finished models (swaps them in), and asks for a build when the
-  // shot differs from the one built or asked for. `measurable`: the corners measure
-  // (else nothing is asked). `dragging`: a corner is being dragged (reduced builds).
-  void update(app::Shell& shell, const metrology::Shot& shot, bool measurable, bool dragging);
+  // shot differs from the one built or asked for. `unmeasurable`: empty when the
+  // corners measure, else why not (nothing is asked, and the pane says why while it
+  // has no model). `dragging`: a corner is being dragged (reduced builds).
+  void update(app::Shell& shell, const metrology::Shot& shot, const std::string& unmeasurable, bool dragging);
   // Blocks until the full-resolution model of `shot` is shown (replay's
   // `preview-wait`, for tests that capture it; never in a person's session). Errors:
   // hidden, not measurable, the build failing, `timeoutS` passing.
@@ -139,6 +140,7 @@ class Preview {
   std::shared_ptr<const engine::Scene> builtScene_;
   double buildMs_ = 0;
   std::string error_;  // why the last build failed (the last model stays)
+  std::string unmeasurable_;  // why the corners do not measure now (update's)
   engine::Camera photoCamera_;
   glm::vec3 centre_{0.0f};
   engine::Bounds bounds_;

@@ -92,6 +92,33 @@ TEST(Document, PhotoWithNoCorridorGetsADefaultBoxThatMeasures) {
   auto m = metrology::measureCorridor(doc->shot());
   ASSERT_TRUE(m.ok()) << m.message();
   EXPECT_GT(m->size.lengthM, 0.0);
+  // ... but it is a placeholder, saying so, until a corner is moved.
+  const auto noted = [&](const std::string& words) {
+    const auto notes = doc->notes();
+    return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(words) != std::string::npos; });
+  };
+  EXPECT_TRUE(doc->isPlaceholderBox());
+  EXPECT_TRUE(noted("a default box from the image size, not the corridor's"));
+  // The assumptions' notes go once their values are set, and come back when they are
+  // set back to the assumed ones.
+  EXPECT_TRUE(noted("camera height assumed 1.60 m"));
+  EXPECT_TRUE(noted("focal length assumed 512 px"));
+  Shot set = doc->shot();
+  set.cameraHeightM = 1.45;
+  set.focalPx = 600;
+  doc->apply(set, "camera");
+  EXPECT_FALSE(noted("camera height assumed"));
+  EXPECT_FALSE(noted("focal length assumed"));
+  EXPECT_TRUE(doc->isPlaceholderBox());  // the camera set, the box is still the placeholder
+  set.cornersPx[metrology::P1] += glm::dvec2(5, 3);
+  doc->apply(set, "move P1");
+  EXPECT_FALSE(doc->isPlaceholderBox());
+  EXPECT_FALSE(noted("not the corridor's"));
+  doc->undo();
+  doc->undo();
+  EXPECT_TRUE(noted("camera height assumed 1.60 m"));
+  EXPECT_TRUE(noted("focal length assumed 512 px"));
+  EXPECT_TRUE(doc->isPlaceholderBox());
 }
 
 // E in the editor: corners a person put roughly (each 15 px off) fitted to the photo's

@@ -530,7 +530,22 @@ TEST_F(Edit, NoFileABadFileAndAPhotoWithoutACorridorKeepTheEditorOpen) {
   EXPECT_EQ(greyRows[0].corners[0], glm::dvec2(0.4 * 640, 0.4 * 480));
   EXPECT_EQ(greyRows[0].corners[5], glm::dvec2(0.9 * 640, 0.9 * 480));
   EXPECT_NE(output.find("no corridor found"), std::string::npos) << output;
-  EXPECT_TRUE(greyRows[0].size.has_value());  // the default box measures
+  // A placeholder until a corner is moved: no dimensions (the default box measures, but
+  // not the corridor), and W says why instead of walking it. Once a corner is moved,
+  // it measures, and the placeholder's note has gone.
+  EXPECT_FALSE(greyRows.back().size.has_value());
+  EXPECT_NE(output.find("a default box from the image size, not the corridor's"), std::string::npos) << output;
+  Script s;
+  s.key(3, "W", 1).drag(6, greyRows.back().toWindow(greyRows.back().corners[0]), {12, 8}).at(14, "quit");
+  std::string movedOutput;
+  const auto movedRows = edit("grey_moved", grey.string(), s.str(), "", &movedOutput);
+  ASSERT_GE(movedRows.size(), 14u);
+  EXPECT_NE(movedOutput.find("walk: the corners cannot be measured yet: the box is a placeholder"), std::string::npos)
+      << movedOutput;
+  EXPECT_EQ(movedRows[5].mode, "edit");  // W did not walk
+  EXPECT_FALSE(movedRows[5].size.has_value());
+  EXPECT_NE(movedRows.back().corners[0], greyRows.back().corners[0]);
+  EXPECT_TRUE(movedRows.back().size.has_value());
 }
 
 }  // namespace
