@@ -279,6 +279,34 @@ void EditMode::drawCamera(app::Shell& shell) {
     wrapped(kNoteColour, shot.cameraHeightM ? "the camera height gives the scale; the reference checks it"
                                             : "the reference gives the scale");
   }
+  // The lens's radial distortion (OpenCV's k1, k2 over the focal-normalised radius):
+  // unknown (measure then fits it to the corners when they show one), none, or given.
+  if (shot.distortion) {
+    if (number("distortion k1", shot.distortion->k1, "%.4f")) {
+      after.distortion->k1 = v;
+      label = "distortion";
+    }
+    if (number("distortion k2", shot.distortion->k2, "%.4f")) {
+      after.distortion->k2 = v;
+      label = "distortion";
+    }
+    if (ImGui::SmallButton("distortion unknown")) {
+      after.distortion.reset();
+      label = "distortion unknown";
+    }
+    rememberWidget("distortion unknown");
+  } else {
+    const bool estimated = live_.measurement && live_.measurement->distortionSource == metrology::DistortionSource::kCorners;
+    char k1[32];
+    std::snprintf(k1, sizeof k1, "%.4f", estimated ? live_.measurement->camera.distortion.k1 : 0.0);
+    wrapped(kNoteColour, estimated ? std::string("lens distortion: not given; k1 ") + k1 + " fitted to the corners"
+                                   : std::string("lens distortion: not given (the corners show none)"));
+    if (ImGui::SmallButton("set distortion")) {
+      after.distortion = estimated ? live_.measurement->camera.distortion : metrology::RadialDistortion{};
+      label = "distortion";
+    }
+    rememberWidget("set distortion");
+  }
   if (!label.empty()) applyEdit(shell, after, label);
 }
 
@@ -368,6 +396,8 @@ void EditMode::addCameraTrace(app::TraceRow& row) const {
                                                        {"to", metrology::cornerName(shot.reference->to)},
                                                        {"length_m", shot.reference->lengthM}}
                                        : ordered_json(nullptr);
+  camera["distortion"] =
+      shot.distortion ? ordered_json{{"k1", shot.distortion->k1}, {"k2", shot.distortion->k2}} : ordered_json(nullptr);
   const modeling::ExifTags& exif = doc_->exif();
   camera["exif"] = exif.present ? ordered_json{{"make", exif.make},
                                                 {"model", exif.model},

@@ -161,7 +161,7 @@ class EditMode : public app::AppMode {
   bool pickReference(app::Shell& shell, int corner);  // a click while picking the reference's corners
   void addCameraTrace(app::TraceRow& row) const;      // the trace's "camera" and "handle_warnings"
   void rememberWidget(const char* name);              // the last item's rectangle, for the trace
-  void drawCorners();
+  void drawCorners(app::Shell& shell);
   void drawCanvasOverlay();
   void drawEmptyHint(app::Shell& shell);
 

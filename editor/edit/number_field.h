@@ -30,12 +30,16 @@ struct FieldRange {
 };
 
 // Every number field the editor has (README "The editor": the table of field ranges).
-inline constexpr std::array<FieldRange, 11> kFieldRanges{{
+inline constexpr std::array<FieldRange, 15> kFieldRanges{{
     {"focal px", "focal length", 50, 50000, "px"},
     {"focal mm", "focal length", 0.5, 2000, "mm"},
     {"sensor width mm", "sensor width", 1, 100, "mm"},
     {"principal u px", "principal point u", -1, 2, "px", true},
     {"principal v px", "principal point v", -1, 2, "px", true},
+    {"distortion k1", "distortion k1", -2, 2, "per (r/f)^2"},
+    {"distortion k2", "distortion k2", -2, 2, "per (r/f)^4"},
+    {"corner u px", "corner u", -1, 2, "px", true},
+    {"corner v px", "corner v", -1, 2, "px", true},
     {"camera height m", "camera height", 0.05, 100, "m"},
     {"reference m", "reference length", 0.01, 10000, "m"},
     {"offset m", "offset", -10000, 10000, "m"},

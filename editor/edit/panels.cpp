@@ -148,7 +148,7 @@ void EditMode::drawPanel(app::Shell& shell) {
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
   drawMeasurement();
   drawCamera(shell);
-  drawCorners();
+  drawCorners(shell);
   if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(kKeys);
   ImGui::End();
 }
@@ -181,7 +181,7 @@ void EditMode::drawMeasurement() {
   for (const std::string& warning : live_.warnings) wrapped(kWarningColour, "warning: " + warning);
 }
 
-void EditMode::drawCorners() {
+void EditMode::drawCorners(app::Shell& shell) {
   if (!ImGui::CollapsingHeader("Corners", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Shot& shot = doc_->shot();
   for (int k = 0; k < kCornerCount; ++k) {
@@ -197,6 +197,28 @@ void EditMode::drawCorners() {
     ImGui::PushStyleColor(ImGuiCol_Text, roleColourVec(k));
     if (ImGui::Selectable(line, selected_ == k)) select(k);
     ImGui::PopStyleColor();
+  }
+  // The selected corner typed in (one undo step each, range-checked as every field).
+  if (selected_ < 0 || selected_ >= kCornerCount) {
+    ImGui::TextDisabled("click a corner to type its position");
+    return;
+  }
+  Shot after = shot;
+  double v = 0;
+  bool edited = false;
+  for (int axis = 0; axis < 2; ++axis) {
+    const char* label = axis == 0 ? "corner u px" : "corner v px";
+    const double side = axis == 0 ? shot.imageWidth : shot.imageHeight;
+    if (fields_.field(shell, label, shot.cornersPx[selected_][axis], &v, "%.2f", side)) {
+      after.cornersPx[selected_][axis] = v;
+      edited = true;
+    }
+    rememberWidget(label);
+    fields_.drawRefusal(label);
+  }
+  if (edited) {
+    lastMoved_ = selected_;
+    applyEdit(shell, after, std::string("type ") + metrology::cornerName(selected_));
   }
 }
 

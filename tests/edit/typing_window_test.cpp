@@ -178,5 +178,55 @@ TEST_F(EditTyping, AValueOutOfRangeIsRefusedWithTheFieldsName) {
   EXPECT_FALSE(rows[59].dirty);  // nothing was accepted
 }
 
+TEST_F(EditTyping, ASelectedCornersPositionIsTyped) {
+  // Alt+3 selects P3; its u and v typed (Enter, then Tab) are where it goes, exactly,
+  // as one undo step each; a v far outside the photo is refused in words.
+  Script s;
+  s.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  s.at(8, "quit");
+  const auto selected = edit("corner_selected", s.str());
+  ASSERT_GE(selected.size(), 8u);
+  ASSERT_EQ(selected.back().selected, std::optional<std::string>("P3"));
+  Script t;
+  t.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  t.click(8, field(selected.back(), "corner u px"));
+  typeQuickly(t, 12, "540.25\n");
+  t.click(20, field(selected.back(), "corner v px"));
+  typeQuickly(t, 24, "418.5");
+  t.key(28, "TAB", 2);
+  t.click(40, field(selected.back(), "corner v px"));
+  typeQuickly(t, 44, "99999\n");
+  t.at(60, "quit");
+  std::string output;
+  const auto rows = edit("corner_typed", t.str(), &output);
+  ASSERT_GE(rows.size(), 60u);
+  EXPECT_EQ(rows[59].corners[2], glm::dvec2(540.25, 418.5));
+  EXPECT_EQ(rows[59].corners[0], selected.back().corners[0]);  // the others stay
+  EXPECT_EQ(rows[59].raw["camera"]["refused"], "corner v 99999 px: expected -720 to 1440 px");
+  EXPECT_TRUE(rows[59].dirty);
+}
+
+TEST_F(EditTyping, TheLensDistortionIsShownAndTyped) {
+  // The sample shot gives none: "set distortion" makes it known (none, or what the
+  // corners show), then k1 is typed.
+  const Row r0 = opened();
+  ASSERT_TRUE(r0.raw["camera"]["distortion"].is_null());
+  Script s;
+  s.click(5, field(r0, "set distortion"));
+  s.at(12, "quit");
+  const auto set = edit("distortion_set", s.str());
+  ASSERT_GE(set.size(), 12u);
+  ASSERT_TRUE(set.back().raw["camera"]["distortion"].is_object()) << set.back().raw["camera"].dump();
+  Script t;
+  t.click(5, field(r0, "set distortion"));
+  t.click(12, field(set.back(), "distortion k1"));
+  typeQuickly(t, 16, "-0.05\n");
+  t.at(30, "quit");
+  const auto rows = edit("distortion_typed", t.str());
+  ASSERT_GE(rows.size(), 30u);
+  EXPECT_EQ(rows[29].raw["camera"]["distortion"]["k1"].get<double>(), -0.05) << rows[29].raw["camera"].dump();
+  EXPECT_TRUE(rows[29].dirty);
+}
+
 }  // namespace
 }  // namespace pw::edit::test
