@@ -402,13 +402,55 @@ void EditMode::walk(app::Shell& shell) {
     shell.showMessage("walk: the corners cannot be measured yet: " + live_.error);
     return;
   }
+  if (pendingWalk_) {
+    shell.showMessage("walk: its model is being built; the walk starts when it is done");
+    return;
+  }
   // The preview's full model when it is of the corners as they are: W then only uploads it.
   std::shared_ptr<const engine::Scene> built = preview_.fullSceneOf(doc_->shot());
+  if (!built && !walk_.walks(doc_->shot())) {
+    // Built on a thread of its own (seconds on a large photo): the window draws on, and
+    // the panel says so; finishWalk starts the walk.
+    pendingWalk_ = PendingWalk{doc_->shot(), *live_.measurement,
+                               std::async(std::launch::async,
+                                          [shot = doc_->shot(), photo = doc_->photo(), m = *live_.measurement] {
+                                            return buildCorridorScene(shot, photo, m);
+                                          }),
+                               std::chrono::steady_clock::now()};
+    shell.showMessage("walk: building its model ...");
+    // A replay waits for it here, so that W walks in the frame it was pressed in,
+    // whatever the machine's speed.
+    if (shell.replaying()) finishWalk(shell, true);
+    return;
+  }
   if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *live_.measurement, built); !shown) {
     shell.showMessage("walk: no model: " + shown.message());
     return;
   }
   walkModelFrom_ = built ? "preview" : "built";
+  shell.requestMode(std::string(walk_.name()));
+}
+
+void EditMode::finishWalk(app::Shell& shell, bool wait) {
+  if (!pendingWalk_) return;
+  if (!wait && pendingWalk_->scene.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  Result<engine::Scene> scene = pendingWalk_->scene.get();
+  const PendingWalk done{std::move(pendingWalk_->shot), std::move(pendingWalk_->measurement), {}, pendingWalk_->started};
+  pendingWalk_.reset();
+  if (!scene) {
+    shell.showMessage("walk: no model: " + scene.message());
+    return;
+  }
+  if (!doc_ || doc_->shot() != done.shot) {
+    shell.showMessage("walk: the corners changed while its model was built; press W to walk them");
+    return;
+  }
+  auto shared = std::make_shared<const engine::Scene>(std::move(*scene));
+  if (Status shown = walk_.show(shell, done.shot, doc_->photo(), done.measurement, shared); !shown) {
+    shell.showMessage("walk: no model: " + shown.message());
+    return;
+  }
+  walkModelFrom_ = "built";
   shell.requestMode(std::string(walk_.name()));
 }
 
@@ -454,6 +496,7 @@ void EditMode::update(app::Shell& shell, double stepS) {
   if (doc_) preview_.update(shell, doc_->shot(), live_.measurement ? std::string() : live_.error.empty() ? std::string("the corners cannot be measured") : live_.error,
                               drag_.has_value());
   updateFiles(shell, stepS);
+  finishWalk(shell, shell.replaying());
   ++step_;
 }
 
@@ -517,6 +560,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
   addCameraTrace(row);
   row.add("preview", preview_.trace(doc_ ? &doc_->shot() : nullptr));
   row.add("walk_model", walkModelFrom_.empty() ? ordered_json(nullptr) : ordered_json(walkModelFrom_));
+  row.add("walk_building", pendingWalk_.has_value());
 }
 
 app::FrameContent EditMode::frame(app::Shell&) {

@@ -7,8 +7,10 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -222,6 +224,16 @@ class EditMode : public app::AppMode {
   // "camera"."widgets", so that replay scripts can click them.
   std::vector<std::pair<std::string, WindowRect>> widgetRects_;
   std::string walkModelFrom_;  // the last W's model: "preview" (the preview's full one) or "built"
+  // W's model being built on a thread of its own, the window drawing on meanwhile
+  // (a replay waits for it in the frame's step, as for an export).
+  struct PendingWalk {
+    metrology::Shot shot;
+    metrology::Measurement measurement;
+    std::future<Result<engine::Scene>> scene;
+    std::chrono::steady_clock::time_point started;
+  };
+  std::optional<PendingWalk> pendingWalk_;
+  void finishWalk(app::Shell& shell, bool wait);
   std::string planMode_;     // building_mode.h's name while a building is open
   std::function<void(app::Shell&, const std::filesystem::path&)> layoutOpener_;
   std::function<bool(app::Shell&)> closeAsker_;

@@ -45,7 +45,7 @@ void ModelWalk::release(app::Shell& shell) {
 
 Status ModelWalk::show(app::Shell& shell, const metrology::Shot& shot, const cv::Mat& photo,
                        const metrology::Measurement& measurement, std::shared_ptr<const engine::Scene> built) {
-  if (walk_ && shot_ && *shot_ == shot && backTo_ == editorMode_) return {};  // walk on where it was left
+  if (walks(shot)) return {};  // walk on where it was left
   if (built) {
     PW_TRY(showScene(shell, *built, editorMode_));  // a copy: the textures are shared
   } else {

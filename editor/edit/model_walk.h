@@ -44,6 +44,8 @@ class ModelWalk : public app::AppMode {
   // first viewpoint; Esc then goes back to the mode `backTo`. Errors: the upload.
   Status showScene(app::Shell& shell, engine::Scene scene, std::string backTo);
   bool hasModel() const { return walk_ != nullptr; }
+  // Whether `shot`'s model is the one walked (show() then only goes back to it).
+  bool walks(const metrology::Shot& shot) const { return walk_ && shot_ && *shot_ == shot && backTo_ == editorMode_; }
 
   std::string_view name() const override { return "walk"; }
   void onEnter(app::Shell& shell) override;

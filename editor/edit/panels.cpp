@@ -123,7 +123,7 @@ void EditMode::drawPanel(app::Shell& shell) {
   if (ImGui::Button("Fit (E)")) fitCorners(shell);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("fit the eight corners to the photo's edges from where they are");
   ImGui::SameLine();
-  ImGui::BeginDisabled(!live_.measurement);
+  ImGui::BeginDisabled(!live_.measurement || pendingWalk_.has_value());
   if (ImGui::Button("Walk (W)")) walk(shell);
   ImGui::EndDisabled();
   if (!planMode_.empty()) {
@@ -144,6 +144,10 @@ void EditMode::drawPanel(app::Shell& shell) {
     layOut(shell);
   }
   if (files_.exporting) ImGui::TextDisabled("exporting %s...", files_.exporting->path.filename().string().c_str());
+  if (pendingWalk_) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - pendingWalk_->started).count();
+    ImGui::TextDisabled("building the walk's model... %.1f s", s);
+  }
   if (!openError_.empty()) wrapped(kErrorColour, "error: " + openError_);
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
   drawMeasurement();
