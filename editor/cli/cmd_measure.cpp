@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
@@ -10,6 +11,7 @@
 #include "modeling/shot_file.h"
 #include "metrology/input_sigma.h"
 #include "metrology/measure.h"
+#include "metrology/object_measure.h"
 #include "metrology/sheet.h"
 
 namespace pw::editor {
@@ -17,7 +19,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: photowalk measure SHOT.json [--method general|seed] [--sigma-px S] [--sigma-height-m S]\n"
-    "                         [--focal-px F] [--sigma-focal R] [--assume-defaults] [--sheet OUT.png]\n\n"
+    "                         [--focal-px F] [--sigma-focal R] [--assume-defaults] [--sheet OUT.png]\n"
+    "                         [--point NAME=U,V[@SURFACE] ...] [--distance A,B ...] [--height A,B ...]\n\n"
     "Measures the corridor's true width, height and length from the shot's photo, focal\n"
     "length, camera height (or reference length) and eight corners, and prints one JSON\n"
     "object: width_m, height_m, length_m, sigma_m, sigma_sources, text, vanishing_point_px,\n"
@@ -48,7 +51,94 @@ constexpr const char* kUsage =
     "                     1.6 m \u00b1 0.28; said in the JSON's assumptions and on stderr\n"
     "  --sheet OUT.png    also draw a measurement sheet: the photo with the corners, the\n"
     "                     receding edges to the vanishing point, the horizon and each\n"
-    "                     dimension written on its edge\n";
+    "                     dimension written on its edge\n\n"
+    "Objects in the photo (a door, a picture, a person): points given in the photo's pixels\n"
+    "are placed in the corridor's frame (floor y = 0, metres) and measured, each with its\n"
+    "\u00b1 (the corners', the camera's and the points' own: --sigma-point-px). The JSON\n"
+    "gains points {NAME: {px, on, m, sigma_m, from_camera_m, from_far_wall_m}} and objects\n"
+    "[{quantity, from, to, value_m, sigma_m, text, sigma_sources}].\n"
+    "  --point NAME=U,V[@SURFACE]  a point and the surface it lies on: floor (the default),\n"
+    "                     ceiling, wall:left, wall:right, wall:far, or above:OTHER, on the\n"
+    "                     vertical through the point OTHER given before it (a head above\n"
+    "                     the feet, a door's top above its sill, a lamp below the ceiling)\n"
+    "  --distance A,B     the distance between two points\n"
+    "  --height A,B       how far B is above A\n"
+    "  --sigma-point-px S standard deviation of each point's u and v, pixels (default 1)\n";
+
+// --point NAME=U,V[@SURFACE]
+Result<metrology::ImagePoint> parsePoint(const std::string& text) {
+  const std::string form = "--point takes NAME=U,V[@SURFACE] (SURFACE: floor, ceiling, wall:left, wall:right, "
+                           "wall:far or above:NAME), not '" + text + "'";
+  const size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0) return makeError(form);
+  metrology::ImagePoint point;
+  point.name = text.substr(0, equals);
+  std::string rest = text.substr(equals + 1), surface = "floor";
+  if (const size_t at = rest.find('@'); at != std::string::npos) {
+    surface = rest.substr(at + 1);
+    rest = rest.substr(0, at);
+  }
+  const size_t comma = rest.find(',');
+  if (comma == std::string::npos) return makeError(form);
+  auto u = parseNumber(rest.substr(0, comma), "--point " + point.name + " u");
+  if (!u) return u.error();
+  auto v = parseNumber(rest.substr(comma + 1), "--point " + point.name + " v");
+  if (!v) return v.error();
+  point.px = {*u, *v};
+  auto on = metrology::surfaceFromName(surface, &point.on.above);
+  if (!on) return makeError(form);
+  point.on.surface = *on;
+  return point;
+}
+
+// --distance A,B and --height A,B
+Result<metrology::ObjectMeasure> parseObjectMeasure(const std::string& text, metrology::ObjectQuantity quantity) {
+  const size_t comma = text.find(',');
+  const std::string option = std::string("--") + metrology::quantityName(quantity);
+  if (comma == std::string::npos || comma == 0 || comma + 1 == text.size()) {
+    return makeError(option + " takes two point names, A,B, not '" + text + "'");
+  }
+  return metrology::ObjectMeasure{quantity, text.substr(0, comma), text.substr(comma + 1)};
+}
+
+// The points and objects as measure's JSON has them.
+void addObjects(nlohmann::ordered_json& doc, const std::vector<metrology::ImagePoint>& asked,
+                const metrology::PointMeasurement& measured) {
+  using nlohmann::ordered_json;
+  ordered_json points = ordered_json::object();
+  for (size_t i = 0; i < measured.points.size(); ++i) {
+    const metrology::LocatedPoint& p = measured.points[i];
+    const glm::dvec3& s = measured.pointSigmaM[i];
+    std::string on = metrology::surfaceName(asked[i].on.surface);
+    if (asked[i].on.surface == metrology::PointSurface::kAbove) on += ":" + asked[i].on.above;
+    points[p.name] = ordered_json{{"px", {asked[i].px.x, asked[i].px.y}},
+                                  {"on", on},
+                                  {"m", {p.m.x, p.m.y, p.m.z}},
+                                  {"sigma_m", {s.x, s.y, s.z}},
+                                  {"from_camera_m", p.fromCameraM},
+                                  {"from_far_wall_m", p.fromFarWallM}};
+  }
+  ordered_json objects = ordered_json::array();
+  for (const metrology::ObjectResult& r : measured.results) {
+    ordered_json sources = ordered_json::object();
+    const std::pair<std::string, double>* top = nullptr;
+    for (const auto& source : r.sigmaSources) {
+      sources[source.first] = source.second;
+      if (!top || source.second > top->second) top = &source;
+    }
+    std::string text = metrology::dimensionText(r.valueM, r.sigmaM);
+    if (top) text += " (mostly: " + top->first + ")";
+    objects.push_back(ordered_json{{"quantity", metrology::quantityName(r.asked.quantity)},
+                                   {"from", r.asked.from},
+                                   {"to", r.asked.to},
+                                   {"value_m", r.valueM},
+                                   {"sigma_m", r.sigmaM},
+                                   {"text", text},
+                                   {"sigma_sources", sources}});
+  }
+  doc["points"] = points;
+  doc["objects"] = objects;
+}
 
 Result<metrology::MeasureOptions> parseMeasureOptions(Args& args) {
   metrology::MeasureOptions options;
@@ -87,6 +177,10 @@ int runMeasure(Args& args) {
   const std::optional<std::string> focalText = args.value("--focal-px");
   const std::optional<std::string> focalSigmaText = args.value("--sigma-focal");
   const bool assumeDefaults = args.flag("--assume-defaults");
+  const std::vector<std::string> pointTexts = args.values("--point");
+  const std::vector<std::string> distanceTexts = args.values("--distance");
+  const std::vector<std::string> heightTexts = args.values("--height");
+  const std::optional<std::string> pointSigmaText = args.value("--sigma-point-px");
   const std::vector<std::string> positionals = args.positionals();
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (!options) return fail(options.message());
@@ -103,6 +197,29 @@ int runMeasure(Args& args) {
 
   auto focalSigma = parseFocalSigma(focalSigmaText);
   if (!focalSigma) return fail(focalSigma.message());
+  std::vector<metrology::ImagePoint> points;
+  for (const std::string& text : pointTexts) {
+    auto point = parsePoint(text);
+    if (!point) return fail(point.message());
+    points.push_back(*point);
+  }
+  std::vector<metrology::ObjectMeasure> objects;
+  for (const auto& [texts, quantity] : {std::pair{&distanceTexts, metrology::ObjectQuantity::kDistance},
+                                        std::pair{&heightTexts, metrology::ObjectQuantity::kHeight}}) {
+    for (const std::string& text : *texts) {
+      auto asked = parseObjectMeasure(text, quantity);
+      if (!asked) return fail(asked.message());
+      objects.push_back(*asked);
+    }
+  }
+  if (!objects.empty() && points.empty()) return fail("--distance and --height measure between points given by --point");
+  double pointSigmaPx = 1.0;
+  if (pointSigmaText) {
+    auto v = parseNumber(*pointSigmaText, "--sigma-point-px");
+    if (!v) return fail(v.message());
+    if (!(*v >= 0)) return fail("--sigma-point-px must be >= 0");
+    pointSigmaPx = *v;
+  }
 
   auto loaded = modeling::loadShot(shotPath, focalPx, assumeDefaults);
   if (!loaded) return fail(loaded.message());
@@ -137,6 +254,13 @@ int runMeasure(Args& args) {
   if (!measurement) return fail(shotPath + ": " + measurement.message());
   auto text = modeling::measurementJson(*measurement, loaded->focalSource, assumptions);
   if (!text) return fail(shotPath + ": " + text.message());
+  if (!points.empty()) {
+    auto measured = metrology::measurePoints(loaded->shot, withSigmas, points, objects, pointSigmaPx);
+    if (!measured) return fail(shotPath + ": " + measured.message());
+    auto doc = nlohmann::ordered_json::parse(*text);
+    addObjects(doc, points, *measured);
+    text = doc.dump(1);
+  }
 
   if (sheetPath) {
     auto sheet = metrology::drawMeasurementSheet(loaded->image, loaded->shot, *measurement);

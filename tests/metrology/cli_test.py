@@ -103,6 +103,34 @@ def main():
             for key, truth in (("width_m", 4.0), ("height_m", 3.5), ("length_m", 19.0)):
                 check(doc["sigma_m"][key] > 0.05 * truth, "the assumed inputs widen the ± of %s" % key)
 
+        # Objects (issue 25): the far wall's floor corners as floor points are the width
+        # apart; its top corner, on the vertical above one of them, the height above it.
+        c = base["corners_px"]
+        r = run(exe, "measure", good, "--point", "p3=%r,%r" % tuple(c["P3"]), "--point", "p4=%r,%r@floor" % tuple(c["P4"]),
+                "--point", "p1=%r,%r@above:p3" % tuple(c["P1"]), "--point", "mid=%r,%r@wall:far" % tuple(
+                    0.5 * (a + b) for a, b in zip(c["P1"], c["P4"])),
+                "--distance", "p3,p4", "--height", "p3,p1")
+        check(r.returncode == 0, "measure --point/--distance/--height exits 0 (%s)" % r.stderr.strip())
+        if r.returncode == 0:
+            doc = json.loads(r.stdout)
+            check(finite_everywhere(doc), "the objects' JSON is finite")
+            objects = {o["quantity"]: o for o in doc.get("objects", [])}
+            check(abs(objects["distance"]["value_m"] / 4.0 - 1) < 0.003, "P3-P4 is the width (%s)" % objects["distance"])
+            check(abs(objects["height"]["value_m"] / 3.5 - 1) < 0.003, "P1 above P3 is the height (%s)" % objects["height"])
+            check(" m \u00b1 " in objects["height"]["text"], "an object's text has its ±")
+            check(0 < objects["height"]["sigma_m"] < 0.1, "its sigma is plausible")
+            check(abs(doc["points"]["mid"]["m"][2] + 19.0) < 0.06, "a far-wall point is on the far wall")
+            check(abs(doc["points"]["p3"]["from_far_wall_m"]) < 0.06, "P3 is at the far wall")
+        for args, words in ((["--point", "x=1"], "--point takes NAME=U,V"),
+                            (["--point", "x=1,2@roof"], "--point takes NAME=U,V"),
+                            (["--height", "a,b"], "measure between points given by --point"),
+                            (["--point", "a=600,500", "--distance", "a"], "--distance takes two point names"),
+                            (["--point", "a=600,500", "--distance", "a,zz"], "\"zz\": no such point"),
+                            (["--point", "sky=600,10"], "point \"sky\"")):
+            r = run(exe, "measure", good, *args)
+            check(r.returncode == 1 and r.stderr.count("\n") == 1 and r.stderr.startswith("error:") and words in r.stderr,
+                  "measure %s: one error line with '%s' (%r)" % (" ".join(args), words, r.stderr))
+
         # --sheet writes a PNG at least the photo's size.
         sheet = os.path.join(tmp, "sheet.png")
         r = run(exe, "measure", good, "--sheet", sheet)
