@@ -81,6 +81,9 @@ Result<Layout> readLayout(const fs::path& path) {
     if (!item["shot"].is_string() || item["shot"].get<std::string>().empty()) {
       return makeError(at + ": field \"shot\" must be the shot file's name (a string), not " + typeOf(item["shot"]));
     }
+    if (item["shot"].get<std::string>().find('\0') != std::string::npos) {
+      return makeError(at + ": field \"shot\" holds a NUL character; no file has such a name");
+    }
     entry.shot = item["shot"].get<std::string>();
     if (entry.shot.is_relative()) entry.shot = (path.parent_path() / entry.shot).lexically_normal();
     if (item.contains("attach")) {

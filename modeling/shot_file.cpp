@@ -158,6 +158,9 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bo
   if (image == doc.end() || !image->is_string() || image->get<std::string>().empty()) {
     return makeError(where + ": missing field \"image\" (the photo's path, relative to the shot file)");
   }
+  if (image->get<std::string>().find('\0') != std::string::npos) {
+    return makeError(where + ": field \"image\" holds a NUL character; no file has such a name");
+  }
   fs::path imagePath = image->get<std::string>();
   if (imagePath.is_relative()) imagePath = path.parent_path() / imagePath;
   shot.imagePath = imagePath.lexically_normal().string();

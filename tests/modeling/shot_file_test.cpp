@@ -137,6 +137,11 @@ TEST_F(ShotFile, WriteThenReadGivesTheSameShot) {
   for (int i = 0; i < metrology::kCornerCount; ++i) EXPECT_EQ(again->shot.cornersPx[i], loaded->shot.cornersPx[i]);
 }
 
+TEST_F(ShotFile, AnImagePathWithANulIsRefused) {
+  // Found by modeling/fuzz/shot_fuzz: it was read, and written back as another path.
+  expectError(replaced(shot(), "\"photo.png\"", "\"\\u0000or.png\""), "field \"image\" holds a NUL character");
+}
+
 TEST_F(ShotFile, AShotWithoutAFocalLengthIsWrittenWithoutOne) {
   // Read without one (the EXIF's is taken when the photo is loaded), it was written
   // back as "focal_px": 0, which no reader takes (found by modeling/fuzz/shot_fuzz).
