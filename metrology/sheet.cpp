@@ -136,7 +136,8 @@ cv::Mat toBgr(const cv::Mat& photo) {
 
 }  // namespace
 
-Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, const Measurement& m) {
+Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, const Measurement& m,
+                                     const std::vector<SheetPoint>& points, const std::vector<SheetObject>& objects) {
   if (photo.empty()) return makeError("the photo is empty");
   if (photo.depth() != CV_8U || (photo.channels() != 1 && photo.channels() != 3 && photo.channels() != 4)) {
     return makeError("the photo must be 8-bit grey, BGR or BGRA");
@@ -247,6 +248,23 @@ Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, con
   edgeLabel(canvas, edgeText("H", m.size.heightM, m.sigma.heightM), at(c[P6]), at(c[P8]), at(vp), s, kHeightColour);
   edgeLabel(canvas, edgeText("L", m.size.lengthM, m.sigma.lengthM), at(c[P5]), at(c[P3]), at(c[P6]), s,
             kLengthColour);
+
+  // The objects measured: a line between their points, the value along it; the points
+  // as small rings with their names.
+  const cv::Scalar kObjectColour(60, 230, 255);
+  Style small = s;
+  small.fontScale = 0.75 * s.fontScale;
+  small.thickness = std::max(1, s.thickness - 1);
+  for (const SheetObject& o : objects) {
+    line(canvas, at(o.fromPx), at(o.toPx), kObjectColour, 2 * s.lineWidth);
+    edgeLabel(canvas, o.text, at(o.fromPx), at(o.toPx), at(vp), small, kObjectColour);
+  }
+  for (const SheetPoint& p : points) {
+    cv::circle(canvas, fixed(at(p.px)), static_cast<int>(0.6 * s.radius * (1 << kShift)), kObjectColour, s.lineWidth,
+               cv::LINE_AA, kShift);
+    const glm::dvec2 labelAt = at(p.px) + glm::dvec2(1.2 * s.radius, -0.8 * s.radius);
+    outlinedText(canvas, p.name, cv::Point(static_cast<int>(labelAt.x), static_cast<int>(labelAt.y)), small, kObjectColour);
+  }
 
   // Legend.
   char lines[4][160];

@@ -2,6 +2,10 @@
 // than read (after the seed paper's figure 11).
 #pragma once
 
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
 
 #include "base/result.h"
@@ -19,6 +23,20 @@ namespace pw::metrology {
 // ground line GL with the floor corners extended to it; plus a legend with the camera and the
 // reprojection error in a strip below. Returns a BGR image. Fails only on an empty
 // photo or one of another pixel type.
-Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, const Measurement& measurement);
+//
+// `points` (named, the photo's pixels) are drawn as small rings with their names, and
+// `objects` (a measured distance or height between two of them) as a line with the
+// text written along it (object_measure.h; `measure --point ... --sheet`).
+struct SheetPoint {
+  std::string name;
+  glm::dvec2 px{0.0};
+};
+struct SheetObject {
+  glm::dvec2 fromPx{0.0}, toPx{0.0};
+  std::string text;  // "H 1.78 m +/- 0.02" (the Hershey font has no ±)
+};
+Result<cv::Mat> drawMeasurementSheet(const cv::Mat& photo, const Shot& shot, const Measurement& measurement,
+                                     const std::vector<SheetPoint>& points = {},
+                                     const std::vector<SheetObject>& objects = {});
 
 }  // namespace pw::metrology

@@ -121,6 +121,25 @@ def main():
             check(0 < objects["height"]["sigma_m"] < 0.1, "its sigma is plausible")
             check(abs(doc["points"]["mid"]["m"][2] + 19.0) < 0.06, "a far-wall point is on the far wall")
             check(abs(doc["points"]["p3"]["from_far_wall_m"]) < 0.06, "P3 is at the far wall")
+        # The same from the shot file's own points and measurements, drawn on the sheet.
+        with_points = dict(base, points=[{"name": "p3", "px": c["P3"], "on": "floor"}, {"name": "p4", "px": c["P4"]},
+                                         {"name": "p1", "px": c["P1"], "on": "above:p3"}],
+                           measurements=[{"distance": ["p3", "p4"]}, {"height": ["p3", "p1"]}])
+        points_path = os.path.join(tmp, "points.json")
+        json.dump(with_points, open(points_path, "w"))
+        points_sheet = os.path.join(tmp, "points_sheet.png")
+        r = run(exe, "measure", points_path, "--sheet", points_sheet)
+        check(r.returncode == 0, "measure reads a shot's points and measurements (%s)" % r.stderr.strip())
+        if r.returncode == 0:
+            objects = {o["quantity"]: o for o in json.loads(r.stdout).get("objects", [])}
+            check(abs(objects.get("distance", {}).get("value_m", 0) / 4.0 - 1) < 0.003, "the file's distance is the width")
+            check(abs(objects.get("height", {}).get("value_m", 0) / 3.5 - 1) < 0.003, "the file's height is the height")
+            check(png_size(points_sheet) is not None, "the sheet with the objects is written")
+        bad_points = dict(base, points=[{"name": "a", "px": [1]}])
+        json.dump(bad_points, open(points_path, "w"))
+        r = run(exe, "measure", points_path)
+        check(r.returncode == 1 and "points[0]" in r.stderr and r.stderr.count("\n") == 1,
+              "a shot's malformed point is one error line naming it (%r)" % r.stderr)
         for args, words in ((["--point", "x=1"], "--point takes NAME=U,V"),
                             (["--point", "x=1,2@roof"], "--point takes NAME=U,V"),
                             (["--height", "a,b"], "measure between points given by --point"),
