@@ -159,30 +159,47 @@ void EditMode::drawPanel(app::Shell& shell) {
 
 void EditMode::drawMeasurement() {
   if (!ImGui::CollapsingHeader("Measurement", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  // The dimensions (or why there are none) and the warnings, in a block of one height
+  // whatever it holds (it scrolls when they are more): the panel below it, the Camera
+  // fields, does not move when a measurement appears or fails or a warning comes, so a
+  // second click at the same place hits the same widget.
+  const float lines = 5.0f;
+  ImGui::BeginChild("##dimensions", ImVec2(0.0f, lines * ImGui::GetTextLineHeightWithSpacing()), false);
+  const metrology::Measurement* m = live_.measurement ? &*live_.measurement : nullptr;
+  if (m) {
+    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "width   " + metrology::dimensionWithSource(*m, 0));
+    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "height  " + metrology::dimensionWithSource(*m, 1));
+    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "length  " + metrology::dimensionWithSource(*m, 2));
+    ImGui::TextDisabled("(\xc2\xb1 one sigma of every input)");
+  } else {
+    wrapped(kErrorColour, "cannot measure: " + live_.error);
+  }
   for (const HandleWarning& w : live_.handleWarnings) {  // handle_warnings.h: also on the handles
     wrapped(w.blocking ? kErrorColour : kWarningColour, w.label + ": " + w.text);
   }
-  if (!live_.measurement) {
-    wrapped(kErrorColour, "cannot measure: " + live_.error);
-    return;
+  if (m) {
+    for (const std::string& warning : live_.warnings) wrapped(kWarningColour, "warning: " + warning);
   }
-  const metrology::Measurement& m = *live_.measurement;
-  wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "width   " + metrology::dimensionWithSource(m, 0));
-  wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "height  " + metrology::dimensionWithSource(m, 1));
-  wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "length  " + metrology::dimensionWithSource(m, 2));
-  ImGui::TextDisabled("(\xc2\xb1 one sigma of every input)");
-  const metrology::VanishingPoint& vp = m.vanishing.corridor;
-  ImGui::Text("vanishing point (%.1f, %.1f) px", vp.px.x, vp.px.y);
-  ImGui::Text("  residual %.2f px", vp.residualPx);
-  // One line for the three angles: the panel keeps the Camera fields above the fold.
-  ImGui::Text("yaw %.2f\xc2\xb0 pitch %.2f\xc2\xb0 roll %.2f\xc2\xb0", m.pose.yawDeg, m.pose.pitchDeg, m.pose.rollDeg);
-  ImGui::Text("camera at (%.2f, %.2f, %.2f) m", m.pose.positionM.x, m.pose.positionM.y, m.pose.positionM.z);
-  ImGui::Text("reprojection error %.2f px RMS", m.reprojectionRmsPx);
-  if (m.reference) {
-    ImGui::Text("reference %s-%s %.3f m (given %.3f)", metrology::cornerName(m.reference->from),
-                metrology::cornerName(m.reference->to), m.reference->measuredM, m.reference->givenM);
+  ImGui::EndChild();
+  // The rest folded by default: the Camera fields stay within reach of a 720-pixel window.
+  if (ImGui::TreeNode("vanishing point, pose, residuals")) {
+    if (!m) {
+      ImGui::TextDisabled("(no measurement)");
+      ImGui::TreePop();
+      return;
+    }
+    const metrology::VanishingPoint& vp = m->vanishing.corridor;
+    ImGui::Text("vanishing point (%.1f, %.1f) px", vp.px.x, vp.px.y);
+    ImGui::Text("  residual %.2f px", vp.residualPx);
+    ImGui::Text("yaw %.2f\xc2\xb0 pitch %.2f\xc2\xb0 roll %.2f\xc2\xb0", m->pose.yawDeg, m->pose.pitchDeg, m->pose.rollDeg);
+    ImGui::Text("camera at (%.2f, %.2f, %.2f) m", m->pose.positionM.x, m->pose.positionM.y, m->pose.positionM.z);
+    ImGui::Text("reprojection error %.2f px RMS", m->reprojectionRmsPx);
+    if (m->reference) {
+      ImGui::Text("reference %s-%s %.3f m (given %.3f)", metrology::cornerName(m->reference->from),
+                  metrology::cornerName(m->reference->to), m->reference->measuredM, m->reference->givenM);
+    }
+    ImGui::TreePop();
   }
-  for (const std::string& warning : live_.warnings) wrapped(kWarningColour, "warning: " + warning);
 }
 
 void EditMode::drawCorners(app::Shell& shell) {

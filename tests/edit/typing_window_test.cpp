@@ -206,6 +206,28 @@ TEST_F(EditTyping, ASelectedCornersPositionIsTyped) {
   EXPECT_TRUE(rows[59].dirty);
 }
 
+TEST_F(EditTyping, TheCameraFieldsStayPutWhenTheMeasurementFails) {
+  // P3 typed above the horizon: the corners no longer measure and warnings come; the
+  // Camera fields below are where they were (they moved by the warnings' and the
+  // error's lines before), so a second click at the same place hits the same field.
+  Script s;
+  s.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  s.at(8, "quit");
+  const auto selected = edit("corner_selected_2", s.str());
+  ASSERT_GE(selected.size(), 8u);
+  Script t;
+  t.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  t.click(8, field(selected.back(), "corner v px"));
+  typeQuickly(t, 12, "100\n");
+  t.at(20, "quit");
+  const auto rows = edit("measurement_fails", t.str());
+  ASSERT_GE(rows.size(), 20u);
+  ASSERT_FALSE(rows[19].size.has_value()) << "P3 at v 100 should not measure";
+  for (const char* name : {"focal px", "principal u px", "camera height m", "reference length"}) {
+    EXPECT_EQ(rows[19].raw["camera"]["widgets"][name], selected.back().raw["camera"]["widgets"][name]) << name;
+  }
+}
+
 TEST_F(EditTyping, TheLensDistortionIsShownAndTyped) {
   // The sample shot gives none: "set distortion" makes it known (none, or what the
   // corners show), then k1 is typed.
