@@ -160,6 +160,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     }
     for (const std::string& warning : detection->warnings) doc.notes_.push_back("detection: " + warning);
     for (const std::string& doubt : detection->doubts) doc.notes_.push_back("detection unsure: " + doubt);
+    doc.suggested_ = !detection->confident;
   } else {
     const std::string reason = detection ? detection->notFoundReason : detection.message();
     const int longSide = std::max(shot.imageWidth, shot.imageHeight);
@@ -196,6 +197,8 @@ std::vector<std::string> Document::notes() const {
 }
 
 bool Document::isPlaceholderBox() const { return placeholder_ && shot_.cornersPx == opened_.cornersPx; }
+
+bool Document::isSuggestedBox() const { return suggested_ && shot_.cornersPx == opened_.cornersPx; }
 
 std::optional<double> Document::detectionConfidence(int corner) const {
   if (corner < 0 || corner >= kCornerCount || !confidence_[corner]) return std::nullopt;

@@ -84,6 +84,10 @@ class Document {
   // of its corners is moved: it measures nothing a person should be shown, walk in or
   // export (the editor says so instead).
   bool isPlaceholderBox() const;
+  // Where detection found a box but was unsure of it (detect's exit 3), the box is a
+  // suggestion until one of its corners is moved or the corners are fitted (E): the
+  // editor shows its dimensions as a suggestion's, not a result, with the doubts.
+  bool isSuggestedBox() const;
   // Per corner, the detection's confidence (0..1), while the corner is where detection
   // put it; unset for corners from a file, a default box, or moved since.
   std::optional<double> detectionConfidence(int corner) const;
@@ -145,6 +149,7 @@ class Document {
   cv::Mat photo_;
   std::vector<std::string> notes_;  // what opening found (the assumptions' notes are made by notes())
   std::optional<std::string> placeholder_;  // which placeholder box opening put there, if it did
+  bool suggested_ = false;                  // detection found the box opening put there, unsure of it
   std::array<std::optional<double>, metrology::kCornerCount> confidence_{};
   std::array<glm::dvec2, metrology::kCornerCount> detectedPx_{};
   modeling::ExifTags exif_;

@@ -546,6 +546,10 @@ void EditMode::traceRow(app::TraceRow& row) const {
   } else {
     row.add("measurement", ordered_json(nullptr));
   }
+  row.add("box", !doc_                       ? ordered_json(nullptr)
+                 : doc_->isPlaceholderBox()   ? ordered_json("placeholder")
+                 : doc_->isSuggestedBox()     ? ordered_json("suggested")
+                                              : ordered_json("placed"));
   addDocumentTrace(row);
   traceFiles(row);
   if (const std::optional<Loupe> l = loupe()) {

@@ -163,9 +163,14 @@ void EditMode::drawMeasurement() {
   // whatever it holds (it scrolls when they are more): the panel below it, the Camera
   // fields, does not move when a measurement appears or fails or a warning comes, so a
   // second click at the same place hits the same widget.
+  // (An unsure detection's box is said to be a suggestion above it, until a corner moves.)
+  const metrology::Measurement* m = live_.measurement ? &*live_.measurement : nullptr;
+  if (m && doc_->isSuggestedBox()) {
+    wrapped(kWarningColour, "a suggestion, not a result: detection was unsure of this box (the notes say why); "
+                            "check each corner");
+  }
   const float lines = 5.0f;
   ImGui::BeginChild("##dimensions", ImVec2(0.0f, lines * ImGui::GetTextLineHeightWithSpacing()), false);
-  const metrology::Measurement* m = live_.measurement ? &*live_.measurement : nullptr;
   if (m) {
     wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "width   " + metrology::dimensionWithSource(*m, 0));
     wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "height  " + metrology::dimensionWithSource(*m, 1));

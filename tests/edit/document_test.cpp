@@ -121,6 +121,28 @@ TEST(Document, PhotoWithNoCorridorGetsADefaultBoxThatMeasures) {
   EXPECT_TRUE(doc->isPlaceholderBox());
 }
 
+// Detection unsure of its box (clutter_1: detect's exit 3): a suggestion, shown as one,
+// until a corner is moved; a sure one (corridor_b) and a shot file's are not.
+TEST(Document, AnUnsureDetectionIsASuggestionUntilACornerMoves) {
+  auto unsure = Document::open(groundtruth::loadGroundTruth("clutter_1").image);
+  ASSERT_TRUE(unsure.ok()) << unsure.message();
+  ASSERT_TRUE(unsure->detectionConfidence(0).has_value()) << "clutter_1: a box should be detected";
+  EXPECT_TRUE(unsure->isSuggestedBox());
+  EXPECT_FALSE(unsure->isPlaceholderBox());
+  Shot moved = unsure->shot();
+  moved.cornersPx[metrology::P2] += glm::dvec2(1, 0);
+  unsure->apply(moved, "move P2");
+  EXPECT_FALSE(unsure->isSuggestedBox());
+  unsure->undo();
+  EXPECT_TRUE(unsure->isSuggestedBox());
+  auto sure = Document::open(groundtruth::loadGroundTruth("corridor_b").image);
+  ASSERT_TRUE(sure.ok());
+  EXPECT_FALSE(sure->isSuggestedBox());
+  auto file = Document::open(groundtruth::loadGroundTruth("clutter_1").shot);
+  ASSERT_TRUE(file.ok());
+  EXPECT_FALSE(file->isSuggestedBox());
+}
+
 // E in the editor: corners a person put roughly (each 15 px off) fitted to the photo's
 // edges from where they are, as one undo step, with their confidences shown again.
 TEST(Document, FitCornersBringsARoughBoxOntoThePhotosEdges) {
