@@ -151,11 +151,10 @@ Result<std::vector<double>> quantities(const Measurement& m, const std::vector<I
 
 }  // namespace
 
-Result<PointMeasurement> measurePoints(const Shot& shot, const MeasureOptions& options,
+Result<PointMeasurement> measurePoints(const Shot& shot, const MeasureOptions& options, const Measurement& measurement,
                                        const std::vector<ImagePoint>& points, const std::vector<ObjectMeasure>& asked,
                                        double pointSigmaPx) {
-  auto m = measureCorridor(shot, options);
-  if (!m) return m.error();
+  const Measurement* m = &measurement;
   PointMeasurement out;
   auto base = quantities(*m, points, asked, &out.points);
   if (!base) return base.error();

@@ -84,12 +84,12 @@ struct PointMeasurement {
   std::vector<glm::dvec3> pointSigmaM;  // per point, x y z
 };
 
-// Measures the shot (measureCorridor with `options`), places the points and works out
+// Places the points by `measurement` (the shot measured with `options`) and works out
 // each asked quantity, and each one's ± by measuring again with every input moved by
 // its sigma either way: each corner's u and v (options.cornerSigmaPx), each point's
 // u and v (pointSigmaPx), the focal length, camera height, principal point and lens
 // distortion by options' sigmas (input_sigma.h's withInputSigmas sets them).
-Result<PointMeasurement> measurePoints(const Shot& shot, const MeasureOptions& options,
+Result<PointMeasurement> measurePoints(const Shot& shot, const MeasureOptions& options, const Measurement& measurement,
                                        const std::vector<ImagePoint>& points, const std::vector<ObjectMeasure>& asked,
                                        double pointSigmaPx = 1.0);
 

@@ -314,7 +314,7 @@ int runMeasure(Args& args) {
   std::vector<metrology::SheetPoint> sheetPoints;
   std::vector<metrology::SheetObject> sheetObjects;
   if (!points.empty()) {
-    auto measured = metrology::measurePoints(loaded->shot, withSigmas, points, objects, pointSigmaPx);
+    auto measured = metrology::measurePoints(loaded->shot, withSigmas, *measurement, points, objects, pointSigmaPx);
     if (!measured) return fail(shotPath + ": " + measured.message());
     auto doc = nlohmann::ordered_json::parse(*text);
     addObjects(doc, points, *measured);

@@ -434,9 +434,9 @@ void EditMode::walk(app::Shell& shell) {
 void EditMode::finishWalk(app::Shell& shell, bool wait) {
   if (!pendingWalk_) return;
   if (!wait && pendingWalk_->scene.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  Result<engine::Scene> scene = pendingWalk_->scene.get();
-  const PendingWalk done{std::move(pendingWalk_->shot), std::move(pendingWalk_->measurement), {}, pendingWalk_->started};
+  PendingWalk done = std::move(*pendingWalk_);
   pendingWalk_.reset();
+  Result<engine::Scene> scene = done.scene.get();
   if (!scene) {
     shell.showMessage("walk: no model: " + scene.message());
     return;

@@ -43,6 +43,9 @@ Script& typeQuickly(Script& s, int frame, const std::string& text) {
   return s;
 }
 
+// Alt+3 at frame 3: P3 selected, its u and v fields shown under the corner table.
+Script& selectP3(Script& s) { return s.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up"); }
+
 class EditTyping : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -182,13 +185,13 @@ TEST_F(EditTyping, ASelectedCornersPositionIsTyped) {
   // Alt+3 selects P3; its u and v typed (Enter, then Tab) are where it goes, exactly,
   // as one undo step each; a v far outside the photo is refused in words.
   Script s;
-  s.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  selectP3(s);
   s.at(8, "quit");
   const auto selected = edit("corner_selected", s.str());
   ASSERT_GE(selected.size(), 8u);
   ASSERT_EQ(selected.back().selected, std::optional<std::string>("P3"));
   Script t;
-  t.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  selectP3(t);
   t.click(8, field(selected.back(), "corner u px"));
   typeQuickly(t, 12, "540.25\n");
   t.click(20, field(selected.back(), "corner v px"));
@@ -211,12 +214,12 @@ TEST_F(EditTyping, TheCameraFieldsStayPutWhenTheMeasurementFails) {
   // Camera fields below are where they were (they moved by the warnings' and the
   // error's lines before), so a second click at the same place hits the same field.
   Script s;
-  s.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  selectP3(s);
   s.at(8, "quit");
   const auto selected = edit("corner_selected_2", s.str());
   ASSERT_GE(selected.size(), 8u);
   Script t;
-  t.at(3, "key LEFT_ALT down").key(3, "3", 1).at(4, "key LEFT_ALT up");
+  selectP3(t);
   t.click(8, field(selected.back(), "corner v px"));
   typeQuickly(t, 12, "100\n");
   t.at(20, "quit");

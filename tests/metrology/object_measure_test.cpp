@@ -18,6 +18,14 @@ namespace {
 
 using testing::SyntheticCorridor;
 
+// The shot measured, then its points (measurePoints takes the measurement made).
+Result<PointMeasurement> measureWithPoints(const Shot& shot, const MeasureOptions& options, const std::vector<ImagePoint>& points,
+                                  const std::vector<ObjectMeasure>& asked) {
+  auto m = measureCorridor(shot, options);
+  if (!m) return m.error();
+  return measurePoints(shot, options, *m, points, asked);
+}
+
 // A corridor seen turned and tilted, with the objects' true points (model frame).
 struct Scene {
   SyntheticCorridor corridor;
@@ -60,7 +68,7 @@ struct Scene {
 
 TEST(ObjectMeasure, ExactPointsGiveTheExactSizes) {
   const Scene scene;
-  auto measured = measurePoints(scene.corridor.shot(), {}, scene.points(), Scene::asked());
+  auto measured = measureWithPoints(scene.corridor.shot(), {}, scene.points(), Scene::asked());
   ASSERT_TRUE(measured.ok()) << measured.message();
   ASSERT_EQ(measured->results.size(), 6u);
   for (size_t i = 0; i < 6; ++i) {
@@ -82,7 +90,7 @@ TEST(ObjectMeasure, TheSeedsConstructionGivesTheSameSizesWhereItIsExact) {
   scene.corridor.yawDeg = scene.corridor.pitchDeg = scene.corridor.rollDeg = 0;
   MeasureOptions seed;
   seed.method = Method::kSeed;
-  auto measured = measurePoints(scene.corridor.shot(), seed, scene.points(), Scene::asked());
+  auto measured = measureWithPoints(scene.corridor.shot(), seed, scene.points(), Scene::asked());
   ASSERT_TRUE(measured.ok()) << measured.message();
   for (size_t i = 0; i < 6; ++i) EXPECT_NEAR(measured->results[i].valueM, Scene::kTruth[i], 1e-6 * Scene::kTruth[i]);
 }
@@ -101,7 +109,7 @@ TEST(ObjectMeasure, TheSigmaCoversTheTruthAsOftenAsItShould) {
     for (glm::dvec2& c : shot.cornersPx) c += glm::dvec2(noise(rng), noise(rng));
     std::vector<ImagePoint> points = scene.points();
     for (ImagePoint& p : points) p.px += glm::dvec2(noise(rng), noise(rng));
-    auto measured = measurePoints(shot, {}, points, Scene::asked());
+    auto measured = measureWithPoints(shot, {}, points, Scene::asked());
     ASSERT_TRUE(measured.ok()) << measured.message();
     for (size_t i = 0; i < 6; ++i) {
       const ObjectResult& r = measured->results[i];
@@ -132,8 +140,7 @@ TEST(ObjectMeasure, ErrorsNameThePoint) {
   EXPECT_NE(orphan.message().find("\"feet\", which is not a point given before it"), std::string::npos);
   auto twice = locatePoints(*m, {{"a", {400, 500}, {PointSurface::kFloor}}, {"a", {410, 500}, {PointSurface::kFloor}}});
   ASSERT_FALSE(twice.ok());
-  auto unknown = measurePoints(scene.corridor.shot(), {}, scene.points(),
-                               {{ObjectQuantity::kDistance, "feet", "nowhere"}});
+  auto unknown = measureWithPoints(scene.corridor.shot(), {}, scene.points(), {{ObjectQuantity::kDistance, "feet", "nowhere"}});
   ASSERT_FALSE(unknown.ok());
   EXPECT_NE(unknown.message().find("\"nowhere\": no such point"), std::string::npos) << unknown.message();
   std::string above;
