@@ -1,5 +1,10 @@
 #include "base/staging.h"
 
+#include "base/atomic_file.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <random>
@@ -27,6 +32,51 @@ bool processRuns(const std::string& pid) {
   return state != 'Z' && state != 'X' && state != 'x';
 }
 
+namespace {
+
+// In a staging folder: what its commit is moving, written before the first rename.
+//   last ID NAME   the file that names the others, moved last
+//   new ID NAME    a file moved in under a name nothing had
+//   old ID NAME    a file of the previous model, removed once `last` is in place
+// ID tells one file from another put under its name since: its inode (which a rename
+// keeps, but a file made after another was removed may reuse), size and modification
+// time ("INODE:SIZE:NS").
+constexpr const char* kJournal = ".photowalk-journal";
+
+std::string identityOf(const fs::path& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return "-";
+  return std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
+         std::to_string(static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec);
+}
+
+struct JournalEntry {
+  std::string kind, name, id;
+};
+
+// Removes `destination/name` if it is still the file it was, not one another run has
+// put there since.
+void removeIfSame(const fs::path& destination, const JournalEntry& entry) {
+  if (entry.id == "-" || identityOf(destination / entry.name) != entry.id) return;
+  std::error_code ec;
+  fs::remove(destination / entry.name, ec);
+}
+
+// A run killed among its renames: when its last file arrived, the model it names is
+// whole and the previous one's leftovers go; otherwise the files it moved in go.
+void settleKilledCommit(const fs::path& destination, const fs::path& folder) {
+  std::ifstream in(folder / kJournal);
+  std::vector<JournalEntry> entries;
+  for (JournalEntry e; in >> e.kind >> e.id && in.get() == ' ' && std::getline(in, e.name);) entries.push_back(e);
+  if (entries.empty() || entries.front().kind != "last") return;  // killed before its renames
+  const bool arrived = identityOf(destination / entries.front().name) == entries.front().id;
+  for (const JournalEntry& e : entries) {
+    if (e.kind == (arrived ? "old" : "new")) removeIfSame(destination, e);
+  }
+}
+
+}  // namespace
+
 void removeStaleTemporaries(const fs::path& folder, const std::string& prefix, const std::string& marker) {
   std::error_code ec;
   const fs::path where = folder.empty() ? fs::path(".") : folder;
@@ -45,6 +95,7 @@ void removeStaleTemporaries(const fs::path& folder, const std::string& prefix, c
     const std::string pid = name.substr(start, digits - start);
     if (pid == processIdText() || processRuns(pid)) continue;  // still running
     std::error_code removeEc;
+    if (fs::is_regular_file(it->path() / kJournal, removeEc)) settleKilledCommit(where, it->path());
     fs::remove_all(it->path(), removeEc);
   }
 }
@@ -147,7 +198,8 @@ class CommitLock {
 
 }  // namespace
 
-Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
+Status StagedFiles::commit(const std::vector<std::string>& fileNames,
+                           const std::function<std::vector<std::string>()>& replaced) {
   std::error_code ec;
   for (const std::string& name : fileNames) {
     if (!fs::is_regular_file(folder_ / name, ec)) return makeError((destination_ / name).string() + ": nothing was written");
@@ -156,14 +208,39 @@ Status StagedFiles::commit(const std::vector<std::string>& fileNames) {
       return makeError((destination_ / name).string() + ": cannot write: Is a directory");
     }
   }
+  if (fileNames.empty()) return {};
   // Two writers of one model: each moves all its files in while it holds the lock, so
   // the last one wins whole, never a mix of both.
-  auto lock = CommitLock::acquire(destination_, fileNames.empty() ? std::string("files") : fileNames.back());
+  auto lock = CommitLock::acquire(destination_, fileNames.back());
   if (!lock) return lock.error();
+  std::vector<JournalEntry> entries{{"last", fileNames.back(), identityOf(folder_ / fileNames.back())}};
+  for (const std::string& name : fileNames) {
+    if (!fs::exists(fs::symlink_status(destination_ / name, ec))) entries.push_back({"new", name, identityOf(folder_ / name)});
+  }
+  for (const std::string& name : replaced ? replaced() : std::vector<std::string>{}) {
+    const std::string id = identityOf(destination_ / name);
+    if (id != "-" && std::find(fileNames.begin(), fileNames.end(), name) == fileNames.end()) {
+      entries.push_back({"old", name, id});
+    }
+  }
+  std::ostringstream journal;
+  for (const JournalEntry& e : entries) journal << e.kind << " " << e.id << " " << e.name << "\n";
+  if (Status written = writeFileAtomic(folder_ / kJournal, journal.str()); !written) {
+    return makeError((destination_ / fileNames.back()).string() + ": " + written.message());
+  }
+  const auto removeAll = [&](const char* kind) {
+    for (const JournalEntry& e : entries) {
+      if (e.kind == kind) removeIfSame(destination_, e);
+    }
+  };
   for (const std::string& name : fileNames) {
     fs::rename(folder_ / name, destination_ / name, ec);
-    if (ec) return makeError((destination_ / name).string() + ": cannot write: " + ec.message());
+    if (ec) {
+      removeAll("new");  // what this commit moved in so far: the previous model stays whole
+      return makeError((destination_ / name).string() + ": cannot write: " + ec.message());
+    }
   }
+  removeAll("old");
   return {};
 }
 

@@ -2,10 +2,12 @@
 // a hidden folder beside their destination and moved into place only once every one
 // of them is whole. A failed or killed run leaves the previous files as they were; the
 // folder of a killed run (its process gone) is removed by the next run that writes
-// there. Standard library only (Linux: a process's id from /proc).
+// there, finishing or undoing the renames it was killed among. Standard library and
+// POSIX (a process's id from /proc, a file's inode from stat).
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,8 +53,18 @@ class StagedFiles {
   // Moves the files into the destination in this order (the file that names the
   // others last), each by one rename, holding a lock (a hidden folder named after the
   // last file) so that two writers of one model do not interleave: the last wins
-  // whole. A file missing from the folder is an error and nothing is moved.
-  Status commit(const std::vector<std::string>& fileNames);
+  // whole. A file missing from the folder is an error and nothing is moved. Then
+  // removes the files `replaced` gives (called under the lock, so that it sees the
+  // model that is there now): the previous model's that the new one no longer names.
+  //
+  // The renames are not one step, so the caller names files that differ from the
+  // previous model's by names of their own (a file is replaced in place only by the
+  // same bytes), and a journal in the folder says what is being moved: when this
+  // process is killed among the renames, the next run (create, removeLeftoversOf)
+  // removes the files it moved in if the last one never arrived, or the `replaced`
+  // ones if it did. Either way one model, whole, and nothing of the other.
+  Status commit(const std::vector<std::string>& fileNames,
+                const std::function<std::vector<std::string>()>& replaced = nullptr);
 
  private:
   StagedFiles(std::filesystem::path destination, std::filesystem::path folder)

@@ -9,7 +9,8 @@ scale), in a scratch folder:
   build  `build SHOT -o out/m.wrl --gltf out/m.glb`, alternating A and B, each trial
          killed (SIGKILL, then waited for) at a random moment between its start and
          1.2x a whole build's time. After each: the folder holds model A or model B
-         whole (m.wrl, every m_* texture, m.glb, byte for byte), and every hidden entry
+         whole (m.wrl, every m_* texture it names, m.glb, byte for byte; a changed
+         texture takes a name of its own, so names may differ), and every hidden entry
          in it belongs to the run just killed (its process id in the name, or in its
          lock's): what an earlier killed run left was removed by the next run as it
          started (unless that one too was killed within 0.5 s of its start).
@@ -19,7 +20,8 @@ scale), in a scratch folder:
          before the first whole tour), every frame in `frames` is a whole PNG, and the
          hidden entries belong to the run just killed.
 
-At the end one whole run of each leaves no hidden entry at all. Prints a line per
+At the end one whole run of each leaves no hidden entry at all, and no texture that
+the model does not name. Prints a line per
 failure and a summary; exits non-zero when any trial failed.
 
 Run it on demand, not in CI, and niced on a shared machine:
@@ -94,8 +96,27 @@ def hidden(folder):
 
 
 def model_files(folder):
-    return {e.name: digest(e) for e in folder.iterdir()
-            if e.is_file() and (e.name in ("m.wrl", "m.glb") or e.name.startswith("m_"))}
+    """The model as it reads: m.wrl's text with each texture's name (an m_* file it
+    names) replaced by the file's digest, so that one model compares equal whatever
+    names its textures took (a texture that changed takes a name of its own), and
+    m.glb's digest. A texture named but missing keeps its name, and so differs."""
+    files = {e.name: e for e in folder.iterdir() if e.is_file()}
+    model = {}
+    if "m.wrl" in files:
+        text = files["m.wrl"].read_text(errors="replace")
+        for name in sorted((n for n in files if n.startswith("m_")), key=len, reverse=True):
+            text = text.replace(name, "#" + digest(files[name]))
+        model["m.wrl"] = text
+    if "m.glb" in files:
+        model["m.glb"] = digest(files["m.glb"])
+    return model
+
+
+def unnamed_textures(folder):
+    """The m_* files that m.wrl does not name: what no model uses."""
+    text = (folder / "m.wrl").read_text(errors="replace") if (folder / "m.wrl").exists() else ""
+    return sorted(e.name for e in folder.iterdir()
+                  if e.name.startswith("m_") and f'"{e.name}"' not in text and "_detail." not in e.name)
 
 
 def whole_png(path):
@@ -157,7 +178,7 @@ def check_build(photowalk, work, trials, rng, failures):
         run([photowalk, "build", work / name / "s.json", "-o", alone / "m.wrl", "--gltf", alone / "m.glb"])
         times.append(time.monotonic() - started)
         models[name] = model_files(alone)
-    assert models["a"]["m_s_floor.png"] != models["b"]["m_s_floor.png"]
+    assert digest(work / "alone_a" / "m_s_floor.png") != digest(work / "alone_b" / "m_s_floor.png")
     run([photowalk, "build", work / "a" / "s.json", "-o", out / "m.wrl", "--gltf", out / "m.glb"])
     whole = max(times)
     print(f"build: a whole build takes {whole:.2f} s; {trials} trials killed within 0-{1.2 * whole:.2f} s", flush=True)
@@ -172,13 +193,13 @@ def check_build(photowalk, work, trials, rng, failures):
         allowed = allowed_pids(allowed, pid, delay)
         now = model_files(out)
         if now not in (models["a"], models["b"]):
-            mixed = sorted(n for n in now if now[n] not in (models["a"].get(n), models["b"].get(n)))
-            failures.append(f"build trial {trial}: neither model whole (files of neither: {', '.join(mixed) or 'none'}; "
-                            f"of A: {sum(models['a'].get(n) == d for n, d in now.items())}, "
-                            f"of B: {sum(models['b'].get(n) == d for n, d in now.items())} of {len(now)})")
+            parts = {n: "A" if d == models["a"].get(n) else "B" if d == models["b"].get(n) else "neither" for n, d in now.items()}
+            failures.append(f"build trial {trial}: neither model whole ({parts})")
         check_hidden(out, allowed, "build", trial, failures)
     run([photowalk, "build", work / "b" / "s.json", "-o", out / "m.wrl", "--gltf", out / "m.glb"])
     check_hidden(out, None, "build", "after the whole run", failures)
+    if unnamed_textures(out):
+        failures.append(f"build: textures no model names left after the whole run: {', '.join(unnamed_textures(out))}")
     if model_files(out) != models["b"]:
         failures.append("build: the whole run after the trials did not leave model B")
     return finished

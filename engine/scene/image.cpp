@@ -61,21 +61,23 @@ void appendBytes(void* context, void* data, int size) {
 }
 }  // namespace
 
+Result<std::vector<uint8_t>> encodeImage(const Image& image, const std::string& extension) {
+  if (image.empty()) return makeError("cannot encode an empty image");
+  std::string ext = extension;
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".jpg" && ext != ".jpeg") return encodePng(image);
+  std::vector<uint8_t> bytes;
+  if (!stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 4, image.rgba.data(), 92)) {
+    return makeError("JPEG encoding failed");
+  }
+  return bytes;
+}
+
 Status saveImage(const fs::path& path, const Image& image) {
   if (image.empty()) return makeError(path.string() + ": cannot save an empty image");
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  std::vector<uint8_t> bytes;
-  if (ext == ".jpg" || ext == ".jpeg") {
-    if (!stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 4, image.rgba.data(), 92)) {
-      return makeError(path.string() + ": JPEG encoding failed");
-    }
-  } else {
-    auto png = encodePng(image);
-    if (!png) return makeError(path.string() + ": " + png.message());
-    bytes = std::move(*png);
-  }
-  return writeFileAtomic(path, std::span<const char>(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  auto bytes = encodeImage(image, path.extension().string());
+  if (!bytes) return makeError(path.string() + ": " + bytes.message());
+  return writeFileAtomic(path, std::span<const char>(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
 }
 
 }  // namespace pw::engine

@@ -35,6 +35,8 @@ Result<Image> decodeImage(const uint8_t* bytes, size_t size, const std::string& 
 
 // Writes PNG (or JPEG when the extension is .jpg/.jpeg, quality 92) atomically.
 Status saveImage(const std::filesystem::path& path, const Image& image);
+// Encodes as a file of this extension would hold it (JPEG for .jpg/.jpeg, else PNG).
+Result<std::vector<uint8_t>> encodeImage(const Image& image, const std::string& extension);
 // Encodes PNG into memory: Paeth-filtered rows, zlib (engine/scene/png_encoder.cpp).
 Result<std::vector<uint8_t>> encodePng(const Image& image);
 

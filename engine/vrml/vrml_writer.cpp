@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <map>
 #include <unordered_set>
 
 #include "base/atomic_file.h"
@@ -512,25 +513,35 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
   const bool gz = endsWith(name, ".gz") || endsWith(name, ".wrz");
   std::string outStem = name.substr(0, name.find('.'));
   if (outStem.empty()) outStem = "scene";
-  // One file per distinct image, named after the output and the texture's own url.
-  std::unordered_map<const Image*, std::string> urls;
-  std::unordered_set<std::string> taken;
-  // A name is free unless another texture has it or a file this writer did not write
-  // (one the model now at `out` does not name) is there: never write over a person's file.
-  // The model at `out` and those of its other VRML names (OUTSTEM.wrl, .wrz, .wrl.gz:
-  // they share the textures' names) say which files are photowalk's.
-  std::unordered_set<std::string> ours;
+  // Which files beside `out` are photowalk's: those the model now at `out` names, and
+  // those its other VRML names (OUTSTEM.wrl, .wrz, .wrl.gz: they share the textures'
+  // names) name. Any other file there is a person's, never written over.
+  std::unordered_set<std::string> previous, siblings;
   for (const std::string& sibling : {name, outStem + ".wrl", outStem + ".wrz", outStem + ".wrl.gz"}) {
     std::error_code existsEc;
     const fs::path model = out.parent_path() / sibling;
     if (!fs::is_regular_file(model, existsEc)) continue;
     const auto quoted = quotedInPreviousModel(model, sibling != outStem + ".wrl");
-    ours.insert(quoted.begin(), quoted.end());
+    (sibling == name ? previous : siblings).insert(quoted.begin(), quoted.end());
   }
-  const auto nameFree = [&](const std::string& file) {
-    if (taken.count(file)) return false;
+  // One file per distinct image, named after the output and the texture's own url,
+  // encoded before it is named: a name is usable when nothing is there, or when the
+  // file there is photowalk's and holds these very bytes. A texture that changed gets
+  // a name of its own (m_s_floor_2.png), so that the previous model keeps its textures
+  // until the new one replaces it in one rename (base/staging.h).
+  std::unordered_map<const Image*, std::string> urls;
+  std::map<std::string, std::vector<uint8_t>> files;  // by name
+  const auto usable = [&](const std::string& file, const std::vector<uint8_t>& bytes) {
+    if (files.count(file)) return false;
     std::error_code ec;
-    return options.overwriteForeignFiles || ours.count(file) || !fs::exists(out.parent_path() / file, ec);
+    const fs::path there = out.parent_path() / file;
+    if (!fs::exists(fs::symlink_status(there, ec))) return true;
+    if (!previous.count(file) && !siblings.count(file)) return options.overwriteForeignFiles;
+    if (!fs::is_regular_file(fs::symlink_status(there, ec)) || fs::file_size(there, ec) != bytes.size()) return false;
+    auto held = readInputFile(there, kTextureInput);
+    return held && held->size() == bytes.size() && std::equal(bytes.begin(), bytes.end(), held->begin(), [](uint8_t a, char b) {
+             return a == static_cast<uint8_t>(b);
+           });
   };
   const char* extension = options.jpegTextures ? ".jpg" : ".png";
   for (const Shape& s : scene.shapes) {
@@ -545,21 +556,26 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     // Grey (intensity) textures stay PNG: a JPEG would come back in colour, replacing
     // the material's colour instead of modulating it.
     const char* ext = t.image->grey ? ".png" : extension;
-    const bool detail = t.sourceFromTexCoord && hasDetail(t);
-    const auto usable = [&](const std::string& name) { return nameFree(name) && (!detail || nameFree(detailUrl(name))); };
+    auto bytes = encodeImage(*t.image, ext);
+    if (!bytes) return makeError((out.parent_path() / (base + ext)).string() + ": " + bytes.message());
+    // Its detail layer (texture_detail.h) beside it, named after it, as the info lines say.
+    const Image* detail = t.sourceFromTexCoord && hasDetail(t) && !urls.count(t.detail.get()) ? t.detail.get() : nullptr;
+    std::vector<uint8_t> detailBytes;
+    if (detail) {
+      auto encoded = encodeImage(*detail, fs::path(detailUrl(base + ext)).extension().string());
+      if (!encoded) return makeError((out.parent_path() / detailUrl(base + ext)).string() + ": " + encoded.message());
+      detailBytes = std::move(*encoded);
+    }
     std::string file = base + ext;
-    for (int k = 2; !usable(file); ++k) file = base + "_" + std::to_string(k) + ext;
-    taken.insert(file);
+    for (int k = 2; !usable(file, *bytes) || (detail && !usable(detailUrl(file), detailBytes)); ++k) {
+      file = base + "_" + std::to_string(k) + ext;
+    }
     urls.emplace(t.image.get(), file);
-  }
-  // Detail layers (texture_detail.h) beside their textures, as the info lines name them.
-  for (const Shape& s : scene.shapes) {
-    const Texture* t = s.appearance ? s.appearance->texture.get() : nullptr;
-    if (!t || !t->sourceFromTexCoord || !hasDetail(*t) || urls.count(t->detail.get())) continue;
-    auto url = urls.find(t->image.get());
-    if (url == urls.end()) continue;
-    const std::string file = detailUrl(url->second);
-    if (taken.insert(file).second) urls.emplace(t->detail.get(), file);
+    files.emplace(file, std::move(*bytes));
+    if (detail) {
+      urls.emplace(detail, detailUrl(file));
+      files.emplace(detailUrl(file), std::move(detailBytes));
+    }
   }
   auto text = vrmlText(scene, options, urls);
   if (!text) return makeError(out.string() + ": " + text.message());
@@ -570,13 +586,15 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
   }
   // The model and its textures are written into a hidden folder beside `out` and moved
   // into place only when all are whole, the textures first, the model that names them
-  // last: a failed (or killed) write leaves the previous model as it was, and the next
-  // write removes what a killed one left (base/staging.h).
+  // last; then the previous model's textures that no model here names any more go. A
+  // failed (or killed) write leaves the previous model as it was, and the next write
+  // removes what a killed one left (base/staging.h).
   auto staged = StagedFiles::create(out.parent_path(), name);
   if (!staged) return makeError(out.string() + ": " + staged.message());
   std::vector<std::string> order;
-  for (const auto& [image, file] : urls) {
-    if (Status saved = saveImage(staged->pathFor(file), *image); !saved) {
+  for (const auto& [file, bytes] : files) {
+    const std::span<const char> span(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (Status saved = writeFileAtomic(staged->pathFor(file), span); !saved) {
       return makeError((out.parent_path() / file).string() + ": " + saved.message());
     }
     order.push_back(file);
@@ -585,7 +603,20 @@ Status writeVrml(const Scene& scene, const fs::path& out, const VrmlWriteOptions
     return makeError(out.string() + ": " + written.message());
   }
   order.push_back(name);
-  return staged->commit(order);
+  // What the model at `out` names when this one replaces it (read under the commit's
+  // lock: another build may have replaced it since), less what this one or a sibling
+  // names. Only image files named after this output: the model's other strings are
+  // descriptions, or urls of files that are not photowalk's to remove.
+  const auto replaced = [&] {
+    std::vector<std::string> gone;
+    for (const std::string& file : quotedInPreviousModel(out, gz)) {
+      const std::string ext = fs::path(file).extension().string();
+      if (file.rfind(outStem + "_", 0) != 0 || (ext != ".png" && ext != ".jpg") || file.find('/') != std::string::npos) continue;
+      if (!files.count(file) && !siblings.count(file)) gone.push_back(file);
+    }
+    return gone;
+  };
+  return staged->commit(order, replaced);
 }
 
 }  // namespace pw::engine

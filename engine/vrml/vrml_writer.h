@@ -32,7 +32,10 @@ struct VrmlWriteOptions {
 // out of range, attribute arrays of the wrong length, a non-finite number). All files
 // are written into a hidden folder beside `out` first and moved into place once whole
 // (base/staging.h): when one cannot be written, none of them appears and the previous
-// model stays as it was.
+// model stays as it was. A texture whose bytes differ from the file of its name that
+// the previous model names takes a name of its own (OUTSTEM_NAME_2.png), so that a
+// kill among the renames leaves one model whole; the previous model's textures that
+// no model at `out`'s names uses any more are removed once the new model is in place.
 Status writeVrml(const Scene& scene, const std::filesystem::path& out, const VrmlWriteOptions& options = {});
 
 // The VRML97 text of a scene. `imageUrls` gives the url written for each texture image

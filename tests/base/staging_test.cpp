@@ -1,5 +1,6 @@
 // base/staging.h: files that appear together, and what killed runs leave removed.
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -107,6 +108,84 @@ TEST_F(StagingTest, ARunStartingRemovesWhatKilledRunsLeftForItsOutput) {
   std::ofstream(dir_ / ".m.wrl.photowalk-lock" / processIdText()).close();
   removeLeftoversOf(dir_ / "m.wrl");
   EXPECT_TRUE(fs::exists(dir_ / ".m.wrl.photowalk-lock"));
+}
+
+// A commit killed among its renames, as its journal records it: model 1 (m.wrl naming
+// m_a.png) in place; model 2 (m.wrl naming m_a_2.png) staged by a process that no
+// longer runs, its texture already moved in and, when `modelArrived`, its model too.
+class KilledCommitTest : public StagingTest {
+ protected:
+  void killedAmongRenames(bool modelArrived) {
+    std::ofstream(dir_ / "m.wrl") << "model 1";
+    std::ofstream(dir_ / "m_a.png") << "a1";
+    const fs::path staged = dir_ / ".m.wrl.photowalk-999999999-abc";
+    fs::create_directories(staged);
+    std::ofstream(staged / "m.wrl") << "model 2";
+    std::ofstream(staged / "m_a_2.png") << "a2";
+    std::ofstream(staged / ".photowalk-journal") << "last " << inode(staged / "m.wrl") << " m.wrl\n"
+                                                 << "new " << inode(staged / "m_a_2.png") << " m_a_2.png\n"
+                                                 << "old " << inode(dir_ / "m_a.png") << " m_a.png\n";
+    fs::rename(staged / "m_a_2.png", dir_ / "m_a_2.png");
+    if (modelArrived) fs::rename(staged / "m.wrl", dir_ / "m.wrl");
+  }
+  // As the journal identifies a file: inode, size, modification time.
+  static std::string inode(const fs::path& path) {
+    struct stat st {};
+    EXPECT_EQ(::stat(path.c_str(), &st), 0) << path;
+    return std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
+           std::to_string(static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec);
+  }
+  std::vector<std::string> left() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+};
+
+TEST_F(KilledCommitTest, KilledBeforeItsModelArrivedItsTexturesGo) {
+  killedAmongRenames(false);
+  removeLeftoversOf(dir_ / "m.wrl");
+  EXPECT_EQ(left(), (std::vector<std::string>{"m.wrl", "m_a.png"}));
+  EXPECT_EQ(readText(dir_ / "m.wrl"), "model 1");
+  EXPECT_EQ(readText(dir_ / "m_a.png"), "a1");
+}
+
+TEST_F(KilledCommitTest, KilledAfterItsModelArrivedThePreviousTexturesGo) {
+  killedAmongRenames(true);
+  ASSERT_TRUE(StagedFiles::create(dir_, "m.wrl"));  // as a run starting to write it
+  EXPECT_EQ(left(), (std::vector<std::string>{"m.wrl", "m_a_2.png"}));
+  EXPECT_EQ(readText(dir_ / "m.wrl"), "model 2");
+}
+
+TEST_F(KilledCommitTest, AFileAnotherRunPutThereSinceStays) {
+  killedAmongRenames(false);
+  // Another run replaced m_a_2.png with its own (a new file: another inode).
+  fs::remove(dir_ / "m_a_2.png");
+  std::ofstream(dir_ / "m_a_2.png") << "another run's";
+  removeLeftoversOf(dir_ / "m.wrl");
+  EXPECT_EQ(readText(dir_ / "m_a_2.png"), "another run's");
+}
+
+TEST_F(StagingTest, ACommitRemovesWhatThePreviousModelNamedAndTheNewOneDoesNot) {
+  std::ofstream(dir_ / "m.wrl") << "model 1";
+  std::ofstream(dir_ / "m_a.png") << "a1";
+  std::ofstream(dir_ / "m_b.png") << "b, kept";
+  auto staged = StagedFiles::create(dir_, "m.wrl");
+  ASSERT_TRUE(staged);
+  std::ofstream(staged->pathFor("m_a_2.png")) << "a2";
+  std::ofstream(staged->pathFor("m_b.png")) << "b, kept";
+  std::ofstream(staged->pathFor("m.wrl")) << "model 2";
+  bool asked = false;
+  ASSERT_TRUE(staged->commit({"m_a_2.png", "m_b.png", "m.wrl"}, [&] {
+    asked = true;
+    EXPECT_EQ(readText(dir_ / "m.wrl"), "model 1") << "asked before the model is replaced";
+    return std::vector<std::string>{"m_a.png", "m_b.png", "m_missing.png"};
+  }));
+  EXPECT_TRUE(asked);
+  EXPECT_FALSE(fs::exists(dir_ / "m_a.png"));
+  EXPECT_EQ(readText(dir_ / "m_b.png"), "b, kept") << "a file the new model names too stays";
+  EXPECT_EQ(readText(dir_ / "m_a_2.png"), "a2");
 }
 
 TEST_F(StagingTest, AKilledProcessNotYetCollectedIsNotRunning) {

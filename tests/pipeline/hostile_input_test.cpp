@@ -251,22 +251,37 @@ std::map<std::string, std::string> snapshot(const fs::path& dir) {
   return files;
 }
 
-// The model files of a snapshot (m.wrl, m_*), without the shots and photos.
-std::map<std::string, std::string> modelFiles(const std::map<std::string, std::string>& files) {
-  std::map<std::string, std::string> model;
+// The model m.wrl in a snapshot as it reads: its text with each of its textures'
+// names (the m_* files it names) replaced by a hash of the file's bytes, so that one
+// model compares equal whatever names its textures took. A texture it names that is
+// missing keeps its name, and so differs. "" without m.wrl.
+std::string modelAsItReads(const std::map<std::string, std::string>& files) {
+  auto model = files.find("m.wrl");
+  if (model == files.end()) return "";
+  std::string text = model->second;
+  std::vector<std::string> names;
   for (const auto& [name, bytes] : files) {
-    if (name == "m.wrl" || name.rfind("m_", 0) == 0) model[name] = bytes;
+    if (name.rfind("m_", 0) == 0) names.push_back(name);
   }
-  return model;
+  // Longer names first: none is then replaced inside another.
+  std::sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (const std::string& name : names) {
+    const std::string hash = "#" + std::to_string(std::hash<std::string>{}(files.at(name)));
+    for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + hash.size())) text.replace(at, name.size(), hash);
+  }
+  return text;
 }
 
-// Whether `files` holds every file of `model` with its bytes.
-bool holdsWhole(const std::map<std::string, std::string>& files, const std::map<std::string, std::string>& model) {
-  for (const auto& [name, bytes] : model) {
-    auto found = files.find(name);
-    if (found == files.end() || found->second != bytes) return false;
+// The m_* files of a snapshot that its m.wrl does not name: what no model uses.
+std::vector<std::string> unnamedTextures(const std::map<std::string, std::string>& files) {
+  std::vector<std::string> unnamed;
+  const std::string text = files.count("m.wrl") ? files.at("m.wrl") : "";
+  for (const auto& [name, bytes] : files) {
+    if (name.rfind("m_", 0) == 0 && text.find("\"" + name + "\"") == std::string::npos && name.find("_detail.") == std::string::npos) {
+      unnamed.push_back(name);
+    }
   }
-  return true;
+  return unnamed;
 }
 
 // Shot B beside shot A: A's text with another focal length (other textures, not only
@@ -290,7 +305,8 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
   const fs::path shotA = sampleShot("s.json");
   const std::string text = writeShotB(shotA);
   ASSERT_EQ(photowalk("build " + quoted(shotA) + " -o " + quoted(dir_ / "m.wrl"), 300).exitCode, 0);
-  const auto modelA = modelFiles(snapshot(dir_));
+  const auto filesA = snapshot(dir_);
+  const std::string modelA = modelAsItReads(filesA);
   // B whole, for comparison, in a folder of its own.
   const fs::path other = dir_ / "other";
   fs::create_directories(other);
@@ -299,23 +315,26 @@ TEST_F(HostileInput, AKilledBuildLeavesThePreviousModelWholeAndNoTemporaryBehind
   const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(photowalk("build " + quoted(other / "s.json") + " -o " + quoted(other / "m.wrl"), 300).exitCode, 0);
   const double buildS = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const auto modelB = modelFiles(snapshot(other));
+  const auto filesB = snapshot(other);
+  const std::string modelB = modelAsItReads(filesB);
   ASSERT_NE(modelA, modelB);
-  ASSERT_NE(modelA.at("m_s_floor.png"), modelB.at("m_s_floor.png"));
+  ASSERT_NE(filesA.at("m_s_floor.png"), filesB.at("m_s_floor.png"));
   constexpr int kTrials = 16;
   for (int trial = 0; trial < kTrials; ++trial) {
     const double delayS = buildS * (0.5 + 0.6 * trial / (kTrials - 1));  // writing is at the end
     test::runCommand("timeout --foreground -s KILL " + std::to_string(delayS) + " " + binary() + " build " + quoted(dir_ / "b" / "s.json") +
                      " -o " + quoted(dir_ / "m.wrl"));
-    const auto model = modelFiles(snapshot(dir_));
     // Either model, whole.
-    EXPECT_TRUE(model.at("m.wrl") == modelA.at("m.wrl") ? holdsWhole(model, modelA) : holdsWhole(model, modelB))
-        << "trial " << trial << " (killed after " << delayS << " s): a mixed model";
+    const std::string model = modelAsItReads(snapshot(dir_));
+    EXPECT_TRUE(model == modelA || model == modelB) << "trial " << trial << " (killed after " << delayS << " s): a mixed model";
   }
-  // A complete build after them leaves no hidden file of a killed one.
+  // A complete build after them leaves no hidden file of a killed one, and no texture
+  // that no model names.
   ASSERT_EQ(photowalk("build " + quoted(dir_ / "b" / "s.json") + " -o " + quoted(dir_ / "m.wrl"), 300).exitCode, 0);
-  for (const auto& [name, bytes] : snapshot(dir_)) EXPECT_NE(name[0], '.') << name << " was left behind";
-  EXPECT_EQ(modelFiles(snapshot(dir_)).at("m.wrl"), modelB.at("m.wrl"));
+  const auto files = snapshot(dir_);
+  for (const auto& [name, bytes] : files) EXPECT_NE(name[0], '.') << name << " was left behind";
+  EXPECT_EQ(modelAsItReads(files), modelB);
+  EXPECT_EQ(unnamedTextures(files), std::vector<std::string>{});
 }
 
 TEST_F(HostileInput, TwoBuildsToOneOutputLeaveOneModelWhole) {
@@ -328,18 +347,21 @@ TEST_F(HostileInput, TwoBuildsToOneOutputLeaveOneModelWhole) {
     const fs::path alone = dir_ / ("alone_" + shot.parent_path().filename().string());
     fs::create_directories(alone);
     EXPECT_EQ(photowalk("build " + quoted(shot) + " -o " + quoted(alone / "m.wrl"), 300).exitCode, 0);
-    return modelFiles(snapshot(alone));
+    return snapshot(alone);
   };
-  const auto modelA = modelOf(shotA), modelB = modelOf(dir_ / "b" / "s.json");
-  ASSERT_NE(modelA.at("m_s_floor.png"), modelB.at("m_s_floor.png"));
+  const auto filesA = modelOf(shotA), filesB = modelOf(dir_ / "b" / "s.json");
+  ASSERT_NE(filesA.at("m_s_floor.png"), filesB.at("m_s_floor.png"));
+  const std::string modelA = modelAsItReads(filesA), modelB = modelAsItReads(filesB);
   for (int trial = 0; trial < 4; ++trial) {
     const std::string build = binary() + " build ";
     const CommandRun r = test::runCommand("(" + build + quoted(shotA) + " -o " + quoted(out / "m.wrl") + " > /dev/null & " +
                                           build + quoted(dir_ / "b" / "s.json") + " -o " + quoted(out / "m.wrl") +
                                           " > /dev/null; wait)");
-    const auto model = modelFiles(snapshot(out));
-    EXPECT_TRUE(holdsWhole(model, modelA) || holdsWhole(model, modelB)) << "trial " << trial << ": a mixed model";
-    for (const auto& [name, bytes] : snapshot(out)) EXPECT_NE(name[0], '.') << name << " was left behind";
+    const auto files = snapshot(out);
+    const std::string model = modelAsItReads(files);
+    EXPECT_TRUE(model == modelA || model == modelB) << "trial " << trial << ": a mixed model";
+    EXPECT_EQ(unnamedTextures(files), std::vector<std::string>{}) << "trial " << trial;
+    for (const auto& [name, bytes] : files) EXPECT_NE(name[0], '.') << name << " was left behind";
   }
 }
 
