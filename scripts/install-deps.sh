@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages photowalk needs to build, test and run.
 # Idempotent: prints nothing and does nothing when everything is there.
-# Usage: scripts/install-deps.sh [--with-extras]   (extras: view3dscene, node for glTF validation)
+# Usage: scripts/install-deps.sh [--with-extras]   (extras: view3dscene, chromium, node for the
+# glTF validator and the web page's viewer)
 set -euo pipefail
 
 packages=(
@@ -16,7 +17,10 @@ packages=(
 )
 if [[ "${1:-}" == "--with-extras" || "${CI:-}" == "true" ]]; then
   packages+=(view3dscene)
-  # The glTF validator comes from npm; use the machine's Node.js when it has one.
+  # photowalk share's tests open the page in Debian's Chromium (driven by npm's playwright-core).
+  packages+=(chromium)
+  # The glTF validator, the web viewer's three.js and esbuild come from npm; use the
+  # machine's Node.js when it has one.
   command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 fi
 

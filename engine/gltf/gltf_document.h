@@ -38,7 +38,8 @@ Mesh mirroredInX(const Mesh& mesh);
 
 class DocumentBuilder {
  public:
-  explicit DocumentBuilder(const Scene& scene) : scene_(scene) {}
+  // jpegQuality 1..100: opaque textures as JPEG of that quality (0: every one PNG).
+  explicit DocumentBuilder(const Scene& scene, int jpegQuality = 0) : scene_(scene), jpegQuality_(jpegQuality) {}
 
   // Fills document() and binary(); call once.
   Status build();
@@ -86,6 +87,7 @@ class DocumentBuilder {
   int addExtensionUsed(const char* name);
 
   const Scene& scene_;
+  int jpegQuality_ = 0;
   Json doc_ = Json::object();
   std::vector<uint8_t> bin_;
 

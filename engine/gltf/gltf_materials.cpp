@@ -134,11 +134,20 @@ int DocumentBuilder::materialFor(const Appearance* appearance, const Mesh& mesh,
 
 Status DocumentBuilder::embedImages() {
   std::vector<Result<std::vector<uint8_t>>> encoded(pendingImages_.size(), makeError("not encoded"));
+  // JPEG where asked for and the image is opaque (JPEG has no alpha).
+  std::vector<char> jpeg(pendingImages_.size(), 0);
+  for (size_t i = 0; i < pendingImages_.size(); ++i) {
+    jpeg[i] = jpegQuality_ > 0 && !imageHasAlpha(*pendingImages_[i].image);
+    if (jpeg[i]) doc_["images"][pendingImages_[i].index]["mimeType"] = "image/jpeg";
+  }
   // PNG encoding dominates export time (bench/gltf_bench.cpp); images are independent,
   // so they are encoded on as many threads as there are cores.
   std::atomic<size_t> next{0};
   auto work = [&] {
-    for (size_t i = next++; i < pendingImages_.size(); i = next++) encoded[i] = encodePng(*pendingImages_[i].image);
+    for (size_t i = next++; i < pendingImages_.size(); i = next++) {
+      const Image& image = *pendingImages_[i].image;
+      encoded[i] = jpeg[i] ? encodeJpeg(image, jpegQuality_) : encodePng(image);
+    }
   };
   const size_t threadCount =
       std::min<size_t>(pendingImages_.size(), std::max(1u, std::thread::hardware_concurrency())) ;

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "base/atomic_file.h"
+#include "base/base64.h"
 #include "engine/gltf/gltf_document.h"
 
 namespace pw::engine {
@@ -33,27 +34,6 @@ void appendUint32(std::vector<uint8_t>& out, uint32_t value) {
 // Strings from VRML files may hold bytes that are not UTF-8; JSON must be UTF-8, so
 // such bytes become U+FFFD rather than making the export fail.
 std::string dumpJson(const gltf::Json& doc) { return doc.dump(-1, ' ', false, gltf::Json::error_handler_t::replace); }
-
-// Base64 (RFC 4648) of `bytes`, written at `out` (4 characters per 3 bytes, padded).
-void base64Into(const std::vector<uint8_t>& bytes, char* out) {
-  static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3, out += 4) {
-    const uint32_t v = uint32_t(bytes[i]) << 16 | uint32_t(bytes[i + 1]) << 8 | bytes[i + 2];
-    out[0] = kAlphabet[v >> 18];
-    out[1] = kAlphabet[(v >> 12) & 63];
-    out[2] = kAlphabet[(v >> 6) & 63];
-    out[3] = kAlphabet[v & 63];
-  }
-  if (i < bytes.size()) {
-    const bool two = i + 1 < bytes.size();
-    const uint32_t v = uint32_t(bytes[i]) << 16 | (two ? uint32_t(bytes[i + 1]) << 8 : 0);
-    out[0] = kAlphabet[v >> 18];
-    out[1] = kAlphabet[(v >> 12) & 63];
-    out[2] = two ? kAlphabet[(v >> 6) & 63] : '=';
-    out[3] = '=';
-  }
-}
 
 // The GLB header, the JSON chunk and the BIN chunk's header: everything but the
 // binary data itself, which follows unchanged (it is already padded to 4 bytes).
@@ -93,7 +73,7 @@ std::vector<uint8_t> packEmbeddedJson(gltf::Json& doc, const std::vector<uint8_t
   doc["buffers"][0]["uri"] = "";
   const std::string json = dumpJson(doc);
   const size_t slot = json.find("\"uri\":\"\"") + 7;  // between the two quotes
-  const size_t encodedSize = (bin.size() + 2) / 3 * 4;
+  const size_t encodedSize = base64Size(bin.size());
   std::vector<uint8_t> out(json.size() + kPrefix.size() + encodedSize);
   std::memcpy(out.data(), json.data(), slot);
   std::memcpy(out.data() + slot, kPrefix.data(), kPrefix.size());
@@ -104,8 +84,8 @@ std::vector<uint8_t> packEmbeddedJson(gltf::Json& doc, const std::vector<uint8_t
 
 }  // namespace
 
-Result<std::vector<uint8_t>> encodeGltf(const Scene& scene, GltfContainer container) {
-  gltf::DocumentBuilder builder(scene);
+Result<std::vector<uint8_t>> encodeGltf(const Scene& scene, GltfContainer container, int jpegQuality) {
+  gltf::DocumentBuilder builder(scene, jpegQuality);
   PW_TRY(builder.build());
   if (container == GltfContainer::kEmbeddedJson) return packEmbeddedJson(builder.document(), builder.binary());
   auto head = glbHead(builder.document(), builder.binary());

@@ -51,6 +51,8 @@ enum class GltfContainer : uint8_t {
 Status writeGltf(const Scene& scene, const std::filesystem::path& out);
 
 // The file's bytes, without writing it (for writers that stream elsewhere and for tests).
-Result<std::vector<uint8_t>> encodeGltf(const Scene& scene, GltfContainer container);
+// jpegQuality 1..100: opaque textures as JPEG of that quality (a web page's size);
+// 0: PNG, lossless.
+Result<std::vector<uint8_t>> encodeGltf(const Scene& scene, GltfContainer container, int jpegQuality = 0);
 
 }  // namespace pw::engine

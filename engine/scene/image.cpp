@@ -61,16 +61,21 @@ void appendBytes(void* context, void* data, int size) {
 }
 }  // namespace
 
+Result<std::vector<uint8_t>> encodeJpeg(const Image& image, int quality) {
+  if (image.empty()) return makeError("cannot encode an empty image");
+  std::vector<uint8_t> bytes;
+  if (!stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 4, image.rgba.data(), std::clamp(quality, 1, 100))) {
+    return makeError("JPEG encoding failed");
+  }
+  return bytes;
+}
+
 Result<std::vector<uint8_t>> encodeImage(const Image& image, const std::string& extension) {
   if (image.empty()) return makeError("cannot encode an empty image");
   std::string ext = extension;
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext != ".jpg" && ext != ".jpeg") return encodePng(image);
-  std::vector<uint8_t> bytes;
-  if (!stbi_write_jpg_to_func(appendBytes, &bytes, image.width, image.height, 4, image.rgba.data(), 92)) {
-    return makeError("JPEG encoding failed");
-  }
-  return bytes;
+  return encodeJpeg(image, 92);
 }
 
 Status saveImage(const fs::path& path, const Image& image) {

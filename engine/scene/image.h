@@ -37,6 +37,8 @@ Result<Image> decodeImage(const uint8_t* bytes, size_t size, const std::string& 
 Status saveImage(const std::filesystem::path& path, const Image& image);
 // Encodes as a file of this extension would hold it (JPEG for .jpg/.jpeg, else PNG).
 Result<std::vector<uint8_t>> encodeImage(const Image& image, const std::string& extension);
+// Encodes JPEG into memory, quality 1..100 (stb: baseline, 4:2:0 below 90).
+Result<std::vector<uint8_t>> encodeJpeg(const Image& image, int quality);
 // Encodes PNG into memory: Paeth-filtered rows, zlib (engine/scene/png_encoder.cpp).
 Result<std::vector<uint8_t>> encodePng(const Image& image);
 

@@ -1,0 +1,120 @@
+// Opens a page `photowalk share` wrote in Debian's Chromium (headless, WebGL on
+// SwiftShader) through playwright-core, and reports as JSON on stdout:
+//   errors      console errors, page errors and failed requests (none expected)
+//   loadMs      from navigation to the model shown (window.photowalk.ready)
+//   viewpoints  [{name, psnr}]: each viewpoint's frame against a reference PNG
+//               (`photowalk render --viewpoint N --size WxH`), PSNR in dB over RGB
+//   walk        with --walk VIEWPOINT: the eye before and after walking forward with
+//               key events (W, then Shift+W until it stops), and where it stopped
+//   tour        with --tour: whether the tour button started the tour and moved the eye
+//   fps         frames drawn in the last second
+//
+// usage: node web/test/page_check.mjs PAGE.html --size WxH [--reference N=FILE.png ...]
+//            [--walk N] [--walk-seconds S] [--tour] [--screenshot-dir DIR] [--chromium PATH]
+import { chromium } from 'playwright-core';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { resolve, join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const args = process.argv.slice(2);
+const page_path = args.shift();
+const opt = { references: {}, size: [640, 360], walk: null, walkSeconds: 12, tour: false, shots: null, chromium: '/usr/bin/chromium' };
+while (args.length) {
+  const a = args.shift();
+  if (a === '--size') opt.size = args.shift().split('x').map(Number);
+  else if (a === '--reference') { const [n, f] = args.shift().split('='); opt.references[n] = f; }
+  else if (a === '--walk') opt.walk = Number(args.shift());
+  else if (a === '--walk-seconds') opt.walkSeconds = Number(args.shift());
+  else if (a === '--tour') opt.tour = true;
+  else if (a === '--screenshot-dir') opt.shots = args.shift();
+  else if (a === '--chromium') opt.chromium = args.shift();
+  else { console.error(`page_check: unknown argument ${a}`); process.exit(2); }
+}
+
+const browser = await chromium.launch({
+  executablePath: opt.chromium,
+  headless: true,
+  args: ['--no-sandbox', '--disable-dev-shm-usage', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+});
+const report = { errors: [], viewpoints: [] };
+try {
+  const context = await browser.newContext({ viewport: { width: opt.size[0], height: opt.size[1] }, deviceScaleFactor: 1 });
+  const page = await context.newPage();
+  page.on('console', (m) => { if (m.type() === 'error') report.errors.push('console: ' + m.text()); });
+  page.on('pageerror', (e) => report.errors.push('page: ' + e.message));
+  page.on('requestfailed', (r) => report.errors.push('request failed: ' + r.url().slice(0, 200)));
+  // Only the page itself, and what it makes from its own bytes (blob:, data:).
+  page.on('request', (r) => {
+    if (!/^(file|data|blob):/.test(r.url())) report.errors.push('network request: ' + r.url().slice(0, 200));
+  });
+  const started = Date.now();
+  await page.goto(pathToFileURL(resolve(page_path)).href);
+  await page.waitForFunction(() => window.photowalk && window.photowalk.goTo, null, { timeout: 120000 });
+  report.loadMs = Date.now() - started;
+  const frames = () => page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  const names = await page.evaluate(() => window.photowalk.viewpoints);
+  for (let i = 0; i < names.length; ++i) {
+    await page.evaluate((k) => window.photowalk.goTo(k), i);
+    await frames();
+    const entry = { name: names[i] };
+    if (opt.shots) writeFileSync(join(opt.shots, `page_${i + 1}.png`), await page.locator('canvas').screenshot());
+    const reference = opt.references[String(i + 1)];
+    if (reference) {
+      const url = 'data:image/png;base64,' + readFileSync(reference).toString('base64');
+      entry.psnr = await page.evaluate(async (src) => {
+        const img = new Image();
+        img.src = src;
+        await img.decode();
+        const c = document.createElement('canvas');
+        c.width = img.width;
+        c.height = img.height;
+        const g = c.getContext('2d', { willReadFrequently: true });
+        g.drawImage(img, 0, 0);
+        const want = g.getImageData(0, 0, c.width, c.height).data;
+        g.clearRect(0, 0, c.width, c.height);
+        g.drawImage(document.querySelector('canvas'), 0, 0);
+        const got = g.getImageData(0, 0, c.width, c.height).data;
+        let sum = 0;
+        for (let p = 0; p < want.length; p += 4) {
+          for (let k = 0; k < 3; ++k) { const d = want[p + k] - got[p + k]; sum += d * d; }
+        }
+        const mse = sum / ((want.length / 4) * 3);
+        return mse === 0 ? 99 : 10 * Math.log10((255 * 255) / mse);
+      }, url);
+    }
+    report.viewpoints.push(entry);
+  }
+  if (opt.walk !== null) {
+    await page.evaluate((k) => window.photowalk.goTo(k), opt.walk - 1);
+    await frames();
+    const before = await page.evaluate(() => window.photowalk.state());
+    await page.keyboard.down('w');
+    await page.waitForTimeout(1500);
+    await page.keyboard.up('w');
+    await frames();
+    const moved = await page.evaluate(() => window.photowalk.state());
+    await page.keyboard.down('Shift');
+    await page.keyboard.down('w');
+    let last = moved, still = 0;
+    for (let t = 0; t < opt.walkSeconds * 4 && still < 4; ++t) {
+      await page.waitForTimeout(250);
+      const now = await page.evaluate(() => window.photowalk.state());
+      still = Math.hypot(now.eye[0] - last.eye[0], now.eye[2] - last.eye[2]) < 1e-3 ? still + 1 : 0;
+      last = now;
+    }
+    await page.keyboard.up('w');
+    await page.keyboard.up('Shift');
+    report.walk = { before: before.eye, afterWalking: moved.eye, stopped: last.eye, stoppedStill: still >= 4 };
+  }
+  if (opt.tour) {
+    const before = await page.evaluate(() => window.photowalk.state());
+    await page.locator('button.pw-tour').click();
+    await page.waitForTimeout(2000);
+    const during = await page.evaluate(() => window.photowalk.state());
+    report.tour = { started: during.touring, moved: Math.hypot(during.eye[0] - before.eye[0], during.eye[2] - before.eye[2]) };
+  }
+  report.fps = await page.evaluate(() => window.photowalk.fps());
+} finally {
+  await browser.close();
+}
+console.log(JSON.stringify(report));
