@@ -10,7 +10,8 @@ and an imported VRML scene, each page
 
 and on the corridor a walk with key events (W, then Shift+W) moves the eye forward,
 keeps it at the avatar's eye height and stops it at the far wall, one avatar radius
-before it; the tour button plays the tour.
+before it; the tour button plays the tour; in the building, walking left through the
+opening into the wing passes, and beside it the hall's wall stops the eye.
 
 usage: check_share.py PHOTOWALK REPO_ROOT WORK_DIR
 Skipped (exit 77) without node, Chromium or web/node_modules (scripts/install-tools.sh).
@@ -101,7 +102,12 @@ def main():
         json.dump(layout, f)
     building = os.path.join(work, "building.wrl")
     run([photowalk, "build", "--layout", os.path.join(work, "layout.json"), "-o", building])
-    page(photowalk, root, work, "building", os.path.join(work, "layout.json"), building)
+    # The wing opens off the hall's left wall (x = -2) about z = -6; elsewhere the wall stands.
+    report = page(photowalk, root, work, "building", os.path.join(work, "layout.json"), building,
+                  ["--place-walk", "0,1.7,-6,1.5708,4", "--place-walk", "0,1.7,0,1.5708,4"])
+    through, wall = report["placeWalks"]
+    check(through[0] < -3.0, f"the building: walking left at z = -6 passes through the opening into the wing (x {through[0]:.2f})")
+    check(abs(wall[0] - (-2 + 0.25)) < 0.05, f"the building: walking left at z = 0 stops at the hall's wall (x {wall[0]:.2f}, expected -1.75)")
 
     vrml = os.path.join(root, "tests", "data", "vrml-samples", "vrml_2", "kings_head.wrl")
     page(photowalk, root, work, "vrml", vrml, vrml)

@@ -7,7 +7,7 @@
 // look, the thumb pad to walk.
 //
 // For tests and tools, window.photowalk: ready (a promise), viewpoints, goTo(i),
-// state(), playTour(), fps() (frames drawn in the last second).
+// state(), placeAt(eye, yaw), playTour(), fps() (frames drawn in the last second).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { Avatar, CollisionWorld } from './avatar.js';
@@ -154,6 +154,8 @@ async function start() {
     viewpoints: meta.viewpoints.map((v) => v.description),
     goTo,
     playTour,
+    // Tests: the eye put somewhere, looking along `yaw`, as a person walking would be.
+    placeAt: (eye, yaw) => { avatar.eye = [...eye]; avatar.yaw = yaw; avatar.pitch = 0; state.fixed = false; state.tour = null; },
     state: () => ({ eye: [...avatar.eye], yaw: avatar.yaw, pitch: avatar.pitch, viewpoint: state.viewpoint, fixed: state.fixed, touring: !!state.tour }),
     fps: () => state.frames.length,
   };

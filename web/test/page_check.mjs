@@ -6,11 +6,13 @@
 //               (`photowalk render --viewpoint N --size WxH`), PSNR in dB over RGB
 //   walk        with --walk VIEWPOINT: the eye before and after walking forward with
 //               key events (W, then Shift+W until it stops), and where it stopped
+//   placeWalks  with --place-walk X,Y,Z,YAW,SECONDS (repeatable): the eye put there looking
+//               along YAW (0: -Z, pi/2: -X), W held for SECONDS; where the eye ended
 //   tour        with --tour: whether the tour button started the tour and moved the eye
 //   fps         frames drawn in the last second
 //
 // usage: node web/test/page_check.mjs PAGE.html --size WxH [--reference N=FILE.png ...]
-//            [--walk N] [--walk-seconds S] [--tour] [--screenshot-dir DIR] [--chromium PATH]
+//            [--walk N] [--walk-seconds S] [--place-walk X,Y,Z,YAW,S ...] [--tour] [--screenshot-dir DIR] [--chromium PATH]
 import { chromium } from 'playwright-core';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { resolve, join } from 'node:path';
@@ -18,7 +20,7 @@ import { pathToFileURL } from 'node:url';
 
 const args = process.argv.slice(2);
 const page_path = args.shift();
-const opt = { references: {}, size: [640, 360], walk: null, walkSeconds: 12, tour: false, shots: null, chromium: '/usr/bin/chromium' };
+const opt = { references: {}, size: [640, 360], walk: null, walkSeconds: 12, tour: false, shots: null, chromium: '/usr/bin/chromium', placeWalks: [] };
 while (args.length) {
   const a = args.shift();
   if (a === '--size') opt.size = args.shift().split('x').map(Number);
@@ -26,6 +28,7 @@ while (args.length) {
   else if (a === '--walk') opt.walk = Number(args.shift());
   else if (a === '--walk-seconds') opt.walkSeconds = Number(args.shift());
   else if (a === '--tour') opt.tour = true;
+  else if (a === '--place-walk') opt.placeWalks.push(args.shift().split(',').map(Number));
   else if (a === '--screenshot-dir') opt.shots = args.shift();
   else if (a === '--chromium') opt.chromium = args.shift();
   else { console.error(`page_check: unknown argument ${a}`); process.exit(2); }
@@ -105,6 +108,15 @@ try {
     await page.keyboard.up('w');
     await page.keyboard.up('Shift');
     report.walk = { before: before.eye, afterWalking: moved.eye, stopped: last.eye, stoppedStill: still >= 4 };
+  }
+  report.placeWalks = [];
+  for (const [x, y, z, yaw, seconds] of opt.placeWalks) {
+    await page.evaluate(([e, w]) => window.photowalk.placeAt(e, w), [[x, y, z], yaw]);
+    await page.keyboard.down('w');
+    await page.waitForTimeout(seconds * 1000);
+    await page.keyboard.up('w');
+    await frames();
+    report.placeWalks.push((await page.evaluate(() => window.photowalk.state())).eye);
   }
   if (opt.tour) {
     const before = await page.evaluate(() => window.photowalk.state());
