@@ -9,11 +9,11 @@
 #include "base/staging.h"
 #include "editor/cli/command.h"
 #include "editor/edit/building.h"
+#include "editor/edit/model_export.h"
 #include "engine/io/model_io.h"
 #include "engine/web/web_page.h"
 #include "modeling/layout.h"
 #include "modeling/pipeline.h"
-#include "modeling/tour.h"
 
 namespace pw::editor {
 namespace {
@@ -39,7 +39,7 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 
 struct Shared {
   engine::Scene scene;
-  std::vector<std::string> dimensions;
+  std::vector<modeling::CorridorModel> corridors;  // none for a model read from a file
   std::vector<NamedInput> inputs;
 };
 
@@ -67,14 +67,7 @@ Result<Shared> sceneToShare(const std::string& input) {
   for (const modeling::LayoutEntry& entry : layout.corridors) out.inputs.push_back({"a shot", entry.shot.string()});
   auto model = modeling::buildModel(layout, modeling::ModelOptions{});
   if (!model) return model.error();
-  for (const modeling::CorridorModel& corridor : model->corridors) {
-    const auto& m = corridor.measurement;
-    char line[256];
-    std::snprintf(line, sizeof line, "%s: width %.2f ± %.2f m, height %.2f ± %.2f m, length %.2f ± %.2f m",
-                  corridor.name.c_str(), m.size.widthM, m.sigma.widthM, m.size.heightM, m.sigma.heightM, m.size.lengthM,
-                  m.sigma.lengthM);
-    out.dimensions.push_back(line);
-  }
+  out.corridors = std::move(model->corridors);
   out.scene = std::move(model->scene);
   return out;
 }
@@ -88,18 +81,18 @@ int runShare(Args& args) {
   if (positionals.size() != 1) return fail("share takes one model, shot or layout; see photowalk share --help");
   if (!output) return fail("share needs -o OUT.html");
   if (!endsWith(*output, ".html") && !endsWith(*output, ".htm")) return fail(*output + ": the page is HTML: name it .html");
-  engine::WebPageOptions options;
+  int maxTexturePx = engine::WebPageOptions{}.maxTexturePx, jpegQuality = engine::WebPageOptions{}.jpegQuality;
   if (maxText) {
     auto v = parseNumber(*maxText, "--max-texture");
     if (!v) return fail(v.message());
     if (*v < 256 || *v > 8192) return fail("--max-texture must be between 256 and 8192");
-    options.maxTexturePx = static_cast<int>(*v);
+    maxTexturePx = static_cast<int>(*v);
   }
   if (qualityText) {
     auto v = parseNumber(*qualityText, "--quality");
     if (!v) return fail(v.message());
     if (*v < 10 || *v > 100) return fail("--quality must be between 10 and 100");
-    options.jpegQuality = static_cast<int>(*v);
+    jpegQuality = static_cast<int>(*v);
   }
   if (!engine::hasWebViewer()) {
     return fail("this photowalk was built without the web page's viewer: run scripts/install-tools.sh, then build again");
@@ -109,23 +102,14 @@ int runShare(Args& args) {
   auto shared = sceneToShare(positionals[0]);
   if (!shared) return fail(shared.message());
   if (auto distinct = checkNotAnInput(*output, "-o", shared->inputs); !distinct) return fail(distinct.message());
-  options.dimensions = shared->dimensions;
-  // The tour as `photowalk tour` walks it, sampled for the page.
-  if (shared->scene.tour.size() >= 2) {
-    const std::vector<glm::dvec3> waypoints(shared->scene.tour.begin(), shared->scene.tour.end());
-    const modeling::TourPath path(waypoints, modeling::TourOptions{});
-    for (double t = 0; t < path.durationS() + options.tourStepS; t += options.tourStepS) {
-      glm::dvec3 eye;
-      double yaw = 0;
-      path.sample(std::min(t, path.durationS()), eye, yaw);
-      options.tourSamples.push_back({eye.x, eye.y, eye.z, yaw});
-    }
-  }
+  engine::WebPageOptions options = edit::webPageOptionsFor(shared->scene, shared->corridors);
+  options.maxTexturePx = maxTexturePx;
+  options.jpegQuality = jpegQuality;
   engine::WebPageReport report;
   auto html = engine::webPageHtml(shared->scene, options, &report);
   if (!html) return fail(*output + ": " + html.message());
   if (Status written = writeFileAtomic(*output, *html); !written) return fail(written.message());
-  for (const std::string& line : shared->dimensions) std::printf("%s\n", line.c_str());
+  for (const std::string& line : options.dimensions) std::printf("%s\n", line.c_str());
   std::printf("wrote %s: %.1f MB (the model %.1f MB: %zu shapes, %zu viewpoints; textures JPEG q%d, at most %d px%s)\n",
               output->c_str(), report.pageBytes / 1e6, report.modelBytes / 1e6, shared->scene.shapes.size(),
               shared->scene.viewpoints.size(), options.jpegQuality, options.maxTexturePx,

@@ -17,7 +17,7 @@
 
 namespace pw::edit {
 
-enum class BrowserPurpose { kOpen, kSaveAs, kExportVrml, kExportGltf };
+enum class BrowserPurpose { kOpen, kSaveAs, kExportVrml, kExportGltf, kExportPage };
 
 // `save-as FILE.json`, `export FILE.wrl|FILE.glb`: the replay events that do what the
 // browser's Save As and Export do, to FILE (relative to the script).

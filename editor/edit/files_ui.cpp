@@ -70,7 +70,8 @@ const char* purposeName(BrowserPurpose purpose) {
     case BrowserPurpose::kOpen: return "open";
     case BrowserPurpose::kSaveAs: return "save-as";
     case BrowserPurpose::kExportVrml:
-    case BrowserPurpose::kExportGltf: return "export";
+    case BrowserPurpose::kExportGltf:
+    case BrowserPurpose::kExportPage: return "export";
   }
   return "open";
 }
@@ -246,6 +247,7 @@ void EditMode::openBrowser(app::Shell& shell, BrowserPurpose purpose) {
     if (purpose == BrowserPurpose::kSaveAs) name = doc_->path().filename().string();
     if (purpose == BrowserPurpose::kExportVrml) name = stem + ".wrl";
     if (purpose == BrowserPurpose::kExportGltf) name = stem + ".glb";
+    if (purpose == BrowserPurpose::kExportPage) name = stem + ".html";
   }
   setName(files_.name, name);
 }
@@ -270,7 +272,8 @@ void EditMode::confirmBrowser(app::Shell& shell, const std::optional<fs::path>& 
     case BrowserPurpose::kOpen: requestOpen(shell, path); break;
     case BrowserPurpose::kSaveAs: saveAs(shell, path); break;
     case BrowserPurpose::kExportVrml:
-    case BrowserPurpose::kExportGltf: exportTo(shell, path); break;
+    case BrowserPurpose::kExportGltf:
+    case BrowserPurpose::kExportPage: exportTo(shell, path); break;
   }
 }
 
@@ -563,6 +566,8 @@ void EditMode::drawExportButtons(app::Shell& shell) {
   if (recordedButton("Export .wrl", "Export .wrl")) openBrowser(shell, BrowserPurpose::kExportVrml);
   ImGui::SameLine();
   if (recordedButton("Export .glb", "Export .glb")) openBrowser(shell, BrowserPurpose::kExportGltf);
+  ImGui::SameLine();
+  if (recordedButton("Export web page", "Export web page")) openBrowser(shell, BrowserPurpose::kExportPage);
   ImGui::EndDisabled();
 }
 

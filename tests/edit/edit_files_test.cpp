@@ -251,12 +251,13 @@ TEST_F(EditFiles, SaveAsThenReopenGivesTheSameCorners) {
   EXPECT_EQ(fs::path(recent[0].get<std::string>()), dir_ / "saved" / "moved.json");
 }
 
-TEST_F(EditFiles, ExportWritesVrmlAndGltfThatPhotowalkReadsAndAFailureIsAMessage) {
+TEST_F(EditFiles, ExportWritesVrmlGltfAndAWebPageAndAFailureIsAMessage) {
   const fs::path shot = shotCopy("exported");
-  for (const char* name : {"exported.wrl", "exported.glb"}) fs::remove(dir_ / name);
+  for (const char* name : {"exported.wrl", "exported.glb", "exported.html"}) fs::remove(dir_ / name);
   std::string output;
   edit("export", shot.string(),
-       Script().at(5, "export exported.wrl").at(6, "export exported.glb").at(7, "export missing/x.glb").at(9, "quit").str(),
+       Script().at(5, "export exported.wrl").at(6, "export exported.glb").at(7, "export missing/x.glb")
+           .at(8, "export exported.html").at(10, "quit").str(),
        &output);
   EXPECT_NE(output.find("error: not exported: "), std::string::npos) << output;
   EXPECT_FALSE(fs::exists(dir_ / "missing"));
@@ -272,6 +273,19 @@ TEST_F(EditFiles, ExportWritesVrmlAndGltfThatPhotowalkReadsAndAFailureIsAMessage
   // The convert command reads them too.
   const CommandRun convert = photowalk("convert " + (dir_ / "exported.glb").string() + " " + (dir_ / "back.wrl").string());
   EXPECT_EQ(convert.exitCode, 0) << convert.output;
+  // The web page (tests/web opens such pages in a browser): the model, the viewer, and
+  // the Photo viewpoint with its lens in what the page knows.
+  const std::string page = bytesOf(dir_ / "exported.html");
+  EXPECT_NE(page.find("<script type=\"application/octet-stream\" id=\"pw-model\">Z2xURg"), std::string::npos)
+      << "a base64 binary glTF ('glTF')";
+  const std::string metaTag = "id=\"pw-meta\">";
+  const size_t meta = page.find(metaTag);
+  ASSERT_NE(meta, std::string::npos);
+  const size_t start = meta + metaTag.size();
+  const auto info = nlohmann::json::parse(page.substr(start, page.find("</script>", start) - start));
+  EXPECT_EQ(info["viewpoints"][0]["description"], "Photo");
+  EXPECT_TRUE(info["viewpoints"][0].contains("intrinsics"));
+  EXPECT_EQ(info["dimensions"].size(), 1u);
 }
 
 TEST_F(EditFiles, ThePanelsExportButtonOffersTheModelsNameAndEnterWritesIt) {
