@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """photowalk share in a real browser: Debian's Chromium, headless, driven by playwright-core
-(web/test/page_check.mjs). For the sample corridor, a three-corridor building made of it
-and an imported VRML scene, each page
+(web/test/page_check.mjs). For the sample corridor, a three-corridor building made of it,
+a corridor of the POV-Ray ground truth (corridor_c) and an imported VRML scene, each page
 
   - loads with no console error, no page error and no request beyond its own bytes;
   - at each viewpoint draws what `photowalk render` draws there at the same size: PSNR
@@ -13,7 +13,7 @@ keeps it at the avatar's eye height and stops it at the far wall, one avatar rad
 before it; the tour button plays the tour; in the building, walking left through the
 opening into the wing passes, and beside it the hall's wall stops the eye.
 
-usage: check_share.py PHOTOWALK REPO_ROOT WORK_DIR
+usage: check_share.py PHOTOWALK REPO_ROOT WORK_DIR GROUNDTRUTH_DIR
 Skipped (exit 77) without node, Chromium or web/node_modules (scripts/install-tools.sh).
 """
 import json, os, shutil, subprocess, sys
@@ -22,6 +22,7 @@ import json, os, shutil, subprocess, sys
 FLOORS = {
     ("corridor", 1): 29.2, ("corridor", 2): 29.2, ("corridor", 3): 23.9, ("corridor", 4): 31.9,
     ("building", 1): 29.3, ("building", 2): 29.3, ("building", 3): 23.9, ("building", 4): 32.8,
+    ("corridor_c", 1): 40.4, ("corridor_c", 2): 41.2, ("corridor_c", 3): 41.0, ("corridor_c", 4): 33.3,
     ("vrml", 1): 19.5,
 }
 SIZE = "480x270"
@@ -69,7 +70,7 @@ def page(photowalk, root, work, name, source, model, extra=()):
 
 
 def main():
-    photowalk, root, work = sys.argv[1:4]
+    photowalk, root, work, groundtruth = sys.argv[1:5]
     photowalk = os.path.abspath(photowalk)
     if not shutil.which("node") or not os.path.exists("/usr/bin/chromium") or \
             not os.path.isdir(os.path.join(root, "web", "node_modules", "playwright-core")):
@@ -108,6 +109,13 @@ def main():
     through, wall = report["placeWalks"]
     check(through[0] < -3.0, f"the building: walking left at z = -6 passes through the opening into the wing (x {through[0]:.2f})")
     check(abs(wall[0] - (-2 + 0.25)) < 0.05, f"the building: walking left at z = 0 stops at the hall's wall (x {wall[0]:.2f}, expected -1.75)")
+
+    # A corridor of the project's POV-Ray ground truth (narrow, short: corridor_c).
+    for ext in (".json", ".png"):
+        shutil.copy(os.path.join(groundtruth, "corridor_c" + ext), work)
+    narrow = os.path.join(work, "corridor_c.wrl")
+    run([photowalk, "build", os.path.join(work, "corridor_c.json"), "-o", narrow])
+    page(photowalk, root, work, "corridor_c", os.path.join(work, "corridor_c.json"), narrow)
 
     vrml = os.path.join(root, "tests", "data", "vrml-samples", "vrml_2", "kings_head.wrl")
     page(photowalk, root, work, "vrml", vrml, vrml)
