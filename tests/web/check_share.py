@@ -10,13 +10,14 @@ a corridor of the POV-Ray ground truth (corridor_c) and an imported VRML scene, 
 
 and on the corridor a walk with key events (W, then Shift+W) moves the eye forward,
 keeps it at the avatar's eye height and stops it at the far wall, one avatar radius
-before it; the tour button plays the tour; in the building, walking left through the
+before it; touch: a drag on the view turns it and a thumb on the pad walks forward;
+the tour button plays the tour; in the building, walking left through the
 opening into the wing passes, and beside it the hall's wall stops the eye.
 
 usage: check_share.py PHOTOWALK REPO_ROOT WORK_DIR GROUNDTRUTH_DIR
 Skipped (exit 77) without node, Chromium or web/node_modules (scripts/install-tools.sh).
 """
-import json, os, shutil, subprocess, sys
+import json, math, os, shutil, subprocess, sys
 
 # (scene, viewpoint number) -> PSNR floor in dB, measured 2026-12-03 at 480x270 less 2 dB.
 FLOORS = {
@@ -85,7 +86,7 @@ def main():
     model = os.path.join(work, "corridor.wrl")
     run([photowalk, "build", shot, "-o", model])
 
-    report = page(photowalk, root, work, "corridor", shot, model, ["--walk", "2", "--tour"])
+    report = page(photowalk, root, work, "corridor", shot, model, ["--walk", "2", "--tour", "--touch", "2"])
     walk = report["walk"]
     check(walk["afterWalking"][2] < walk["before"][2] - 0.5, f"W walks forward (z {walk['before'][2]:.2f} -> {walk['afterWalking'][2]:.2f})")
     check(abs(walk["stopped"][1] - walk["before"][1]) < 1e-3, f"the eye keeps its height ({walk['stopped'][1]:.3f} m)")
@@ -93,6 +94,13 @@ def main():
     check(walk["stoppedStill"] and abs(walk["stopped"][2] - (-19 + 0.25)) < 0.05,
           f"the far wall stops the walk one radius before it (z {walk['stopped'][2]:.3f}, expected -18.75)")
     check(abs(walk["stopped"][0]) < 0.05, f"the walk stays on the centre line (x {walk['stopped'][0]:.3f})")
+    touch = report["touch"]
+    check(touch["padShown"], "a touch shows the thumb pad")
+    check(abs(touch["yawAfterDrag"] - touch["yawBefore"]) > 0.05,
+          f"a drag on the view turns it (yaw {touch['yawBefore']:.3f} -> {touch['yawAfterDrag']:.3f})")
+    ahead = [-math.sin(touch["yawAfterDrag"]), -math.cos(touch["yawAfterDrag"])]
+    moved = [touch["eyeAfterPad"][0] - touch["eyeBefore"][0], touch["eyeAfterPad"][2] - touch["eyeBefore"][2]]
+    check(moved[0] * ahead[0] + moved[1] * ahead[1] > 0.5, f"the thumb on the pad's upper half walks forward ({moved})")
     check(report["tour"]["started"] and report["tour"]["moved"] > 0.5, f"the tour button plays the tour ({report['tour']})")
 
     layout = {"corridors": [

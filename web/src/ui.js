@@ -4,7 +4,7 @@
 const STYLE = `
 html, body { margin: 0; height: 100%; overflow: hidden; background: #000; font: 14px/1.4 system-ui, sans-serif; }
 canvas { display: block; touch-action: none; }
-.pw-panel { position: fixed; left: 8px; top: 8px; max-width: min(340px, 60vw); color: #eee;
+.pw-panel { position: fixed; z-index: 2; left: 8px; top: 8px; max-width: min(340px, 60vw); color: #eee;
   background: rgba(20, 20, 24, 0.72); border-radius: 6px; padding: 8px 10px; }
 .pw-panel h1 { font-size: 15px; margin: 0 0 4px; }
 .pw-panel ul { list-style: none; margin: 4px 0; padding: 0; }
@@ -14,7 +14,7 @@ canvas { display: block; touch-action: none; }
 .pw-dims { white-space: pre-line; color: #ccc; }
 .pw-keys { color: #999; font-size: 12px; margin-top: 4px; }
 .pw-hidden .pw-body { display: none; }
-.pw-pad { position: fixed; left: 24px; bottom: 24px; width: 120px; height: 120px; border-radius: 60px;
+.pw-pad { position: fixed; z-index: 1; left: 24px; bottom: 24px; width: 120px; height: 120px; border-radius: 60px;
   background: rgba(255, 255, 255, 0.12); border: 2px solid rgba(255, 255, 255, 0.35); touch-action: none; display: none; }
 .pw-pad div { position: absolute; left: 40px; top: 40px; width: 40px; height: 40px; border-radius: 20px; background: rgba(255, 255, 255, 0.5); }
 .pw-touch .pw-pad { display: block; }

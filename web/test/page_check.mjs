@@ -8,11 +8,14 @@
 //               key events (W, then Shift+W until it stops), and where it stopped
 //   placeWalks  with --place-walk X,Y,Z,YAW,SECONDS (repeatable): the eye put there looking
 //               along YAW (0: -Z, pi/2: -X), W held for SECONDS; where the eye ended
+//   touch       with --touch VIEWPOINT: touch events (Chromium's own, through CDP): a drag
+//               on the view, then a thumb held on the pad's upper half; the pad shown,
+//               the yaw before and after the drag, the eye before and after the thumb
 //   tour        with --tour: whether the tour button started the tour and moved the eye
 //   fps         frames drawn in the last second
 //
 // usage: node web/test/page_check.mjs PAGE.html --size WxH [--reference N=FILE.png ...]
-//            [--walk N] [--walk-seconds S] [--place-walk X,Y,Z,YAW,S ...] [--tour] [--screenshot-dir DIR] [--chromium PATH]
+//            [--walk N] [--walk-seconds S] [--place-walk X,Y,Z,YAW,S ...] [--touch N] [--tour] [--screenshot-dir DIR] [--chromium PATH]
 import { chromium } from 'playwright-core';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { resolve, join } from 'node:path';
@@ -28,6 +31,7 @@ while (args.length) {
   else if (a === '--walk') opt.walk = Number(args.shift());
   else if (a === '--walk-seconds') opt.walkSeconds = Number(args.shift());
   else if (a === '--tour') opt.tour = true;
+  else if (a === '--touch') opt.touch = Number(args.shift());
   else if (a === '--place-walk') opt.placeWalks.push(args.shift().split(',').map(Number));
   else if (a === '--screenshot-dir') opt.shots = args.shift();
   else if (a === '--chromium') opt.chromium = args.shift();
@@ -41,7 +45,9 @@ const browser = await chromium.launch({
 });
 const report = { errors: [], viewpoints: [] };
 try {
-  const context = await browser.newContext({ viewport: { width: opt.size[0], height: opt.size[1] }, deviceScaleFactor: 1 });
+  const context = await browser.newContext({
+    viewport: { width: opt.size[0], height: opt.size[1] }, deviceScaleFactor: 1, hasTouch: opt.touch !== undefined,
+  });
   const page = await context.newPage();
   page.on('console', (m) => { if (m.type() === 'error') report.errors.push('console: ' + m.text()); });
   page.on('pageerror', (e) => report.errors.push('page: ' + e.message));
@@ -118,8 +124,33 @@ try {
     await frames();
     report.placeWalks.push((await page.evaluate(() => window.photowalk.state())).eye);
   }
+  if (opt.touch !== undefined) {
+    const cdp = await context.newCDPSession(page);
+    const touch = (type, x, y) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, id: 1 }] });
+    await page.evaluate((k) => window.photowalk.goTo(k), opt.touch - 1);
+    await frames();
+    const start = await page.evaluate(() => window.photowalk.state());
+    const [w, h] = opt.size;
+    await touch('touchStart', w * 0.6, h * 0.5);
+    for (let k = 1; k <= 10; ++k) await touch('touchMove', w * 0.6 - 8 * k, h * 0.5);
+    await touch('touchEnd');
+    await frames();
+    const looked = await page.evaluate(() => window.photowalk.state());
+    const pad = await page.locator('.pw-pad').boundingBox();
+    const before = looked;
+    if (pad) {
+      await touch('touchStart', pad.x + pad.width / 2, pad.y + pad.height * 0.15);
+      await page.waitForTimeout(1500);
+      await touch('touchEnd');
+      await frames();
+    }
+    const walked = await page.evaluate(() => window.photowalk.state());
+    report.touch = { padShown: !!pad, yawBefore: start.yaw, yawAfterDrag: looked.yaw, eyeBefore: before.eye, eyeAfterPad: walked.eye };
+  }
   if (opt.tour) {
     const before = await page.evaluate(() => window.photowalk.state());
+    // A touch screen under 600 px starts with the panel folded: its title unfolds it.
+    if (!(await page.locator('button.pw-tour').isVisible())) await page.locator('.pw-panel h1').click();
     await page.locator('button.pw-tour').click();
     await page.waitForTimeout(2000);
     const during = await page.evaluate(() => window.photowalk.state());
