@@ -94,9 +94,6 @@ int runShare(Args& args) {
     if (*v < 10 || *v > 100) return fail("--quality must be between 10 and 100");
     jpegQuality = static_cast<int>(*v);
   }
-  if (!engine::hasWebViewer()) {
-    return fail("this photowalk was built without the web page's viewer: run scripts/install-tools.sh, then build again");
-  }
   removeLeftoversOf(*output);
 
   auto shared = sceneToShare(positionals[0]);

@@ -674,6 +674,27 @@ const BadInput kBadInputs[] = {
     {"PxPerMNotANumber", [](const fs::path&, const fs::path& out) {
        return "build " + shellQuoted(kShotA) + " --px-per-m nan -o " + shellQuoted(out / "m.wrl");
      }, "--px-per-m wants a number, not 'nan'", {}},
+    // photowalk share: the same rules for its page.
+    {"ShareNotAnHtmlName", [](const fs::path&, const fs::path& out) {
+       return "share " + shellQuoted(kShotA) + " -o " + shellQuoted(out / "page.png");
+     }, "the page is HTML: name it .html", {}},
+    {"ShareMaxTextureTooSmall", [](const fs::path&, const fs::path& out) {
+       return "share " + shellQuoted(kShotA) + " --max-texture 10 -o " + shellQuoted(out / "page.html");
+     }, "--max-texture must be between 256 and 8192", {}},
+    {"ShareQualityNotANumber", [](const fs::path&, const fs::path& out) {
+       return "share " + shellQuoted(kShotA) + " --quality high -o " + shellQuoted(out / "page.html");
+     }, "--quality wants a number, not 'high'", {}},
+    {"ShareModelMissing", [](const fs::path& in, const fs::path& out) {
+       return "share " + shellQuoted(in / "nosuch.wrl") + " -o " + shellQuoted(out / "page.html");
+     }, "nosuch.wrl: no such file", {}},
+    {"ShareShotCornerNotANumber", [](const fs::path& in, const fs::path& out) {
+       const fs::path shot = writeShot(in, [](nlohmann::json& j) { j["corners_px"]["P6"] = {"nan", 1.0}; });
+       return "share " + shellQuoted(shot) + " -o " + shellQuoted(out / "page.html");
+     }, "corner P6 must be [u, v] in pixels", {}},
+    {"ShareOutputIsAFolder", [](const fs::path&, const fs::path& out) {
+       fs::create_directories(out / "page.html");
+       return "share " + shellQuoted(kShotA) + " -o " + shellQuoted(out / "page.html");
+     }, "page.html", {"page.html"}},
     {"ConvertIntoAFolder", [](const fs::path& in, const fs::path& out) {
        const CommandRun built = photowalk("build " + shellQuoted(kShotA) + " -o " + shellQuoted(in / "m.wrl"));
        EXPECT_EQ(built.exitCode, 0) << built.output;
