@@ -6,8 +6,9 @@
 //               (`photowalk render --viewpoint N --size WxH`), PSNR in dB over RGB
 //   walk        with --walk VIEWPOINT: the eye before and after walking forward with
 //               key events (W, then Shift+W until it stops), and where it stopped
-//   placeWalks  with --place-walk X,Y,Z,YAW,SECONDS (repeatable): the eye put there looking
-//               along YAW (0: -Z, pi/2: -X), W held for SECONDS; where the eye ended
+//   placeWalks  with --place-walk X,Y,Z,YAW,DISTANCE (repeatable): the eye put there looking
+//               along YAW (0: -Z, pi/2: -X), W held until it has gone DISTANCE m or a
+//               wall has stopped it; where the eye ended
 //   touch       with --touch VIEWPOINT: touch events (Chromium's own, through CDP): a drag
 //               on the view, then a thumb held on the pad's upper half; the pad shown,
 //               the yaw before and after the drag, the eye before and after the thumb
@@ -15,7 +16,7 @@
 //   fps         frames drawn in the last second
 //
 // usage: node web/test/page_check.mjs PAGE.html --size WxH [--reference N=FILE.png ...]
-//            [--walk N] [--walk-seconds S] [--place-walk X,Y,Z,YAW,S ...] [--touch N] [--tour] [--screenshot-dir DIR] [--chromium PATH]
+//            [--walk N] [--walk-seconds S] [--place-walk X,Y,Z,YAW,DISTANCE ...] [--touch N] [--tour] [--screenshot-dir DIR] [--chromium PATH]
 import { chromium } from 'playwright-core';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { resolve, join } from 'node:path';
@@ -23,7 +24,7 @@ import { pathToFileURL } from 'node:url';
 
 const args = process.argv.slice(2);
 const page_path = args.shift();
-const opt = { references: {}, size: [640, 360], walk: null, walkSeconds: 12, tour: false, shots: null, chromium: '/usr/bin/chromium', placeWalks: [] };
+const opt = { references: {}, size: [640, 360], walk: null, walkSeconds: 120, tour: false, shots: null, chromium: '/usr/bin/chromium', placeWalks: [] };
 while (args.length) {
   const a = args.shift();
   if (a === '--size') opt.size = args.shift().split('x').map(Number);
@@ -61,6 +62,23 @@ try {
   await page.waitForFunction(() => window.photowalk && window.photowalk.goTo, null, { timeout: 120000 });
   report.loadMs = Date.now() - started;
   const frames = () => page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  const state = () => page.evaluate(() => window.photowalk.state());
+  // Waits while a key or thumb is held: until the eye is `distance` m from `from`, or has
+  // stood still for a second (a wall), at most `maxMs`. A slow machine draws fewer frames
+  // and each advances the walk by 0.1 s at most, so the test waits for a distance, not
+  // for a time.
+  const holdUntilMoved = async (from, distance, maxMs) => {
+    let last = await state(), still = 0;
+    for (let t = 0; t < maxMs; t += 250) {
+      await page.waitForTimeout(250);
+      const now = await state();
+      if (Math.hypot(now.eye[0] - from[0], now.eye[2] - from[2]) >= distance) return { eye: now, still: false };
+      still = Math.hypot(now.eye[0] - last.eye[0], now.eye[2] - last.eye[2]) < 1e-3 ? still + 1 : 0;
+      last = now;
+      if (still >= 4) return { eye: now, still: true };
+    }
+    return { eye: last, still: false };
+  };
   const names = await page.evaluate(() => window.photowalk.viewpoints);
   for (let i = 0; i < names.length; ++i) {
     await page.evaluate((k) => window.photowalk.goTo(k), i);
@@ -96,30 +114,23 @@ try {
   if (opt.walk !== null) {
     await page.evaluate((k) => window.photowalk.goTo(k), opt.walk - 1);
     await frames();
-    const before = await page.evaluate(() => window.photowalk.state());
+    const before = await state();
     await page.keyboard.down('w');
-    await page.waitForTimeout(1500);
+    const moved = (await holdUntilMoved(before.eye, 1.0, 30000)).eye;
     await page.keyboard.up('w');
-    await frames();
-    const moved = await page.evaluate(() => window.photowalk.state());
     await page.keyboard.down('Shift');
     await page.keyboard.down('w');
-    let last = moved, still = 0;
-    for (let t = 0; t < opt.walkSeconds * 4 && still < 4; ++t) {
-      await page.waitForTimeout(250);
-      const now = await page.evaluate(() => window.photowalk.state());
-      still = Math.hypot(now.eye[0] - last.eye[0], now.eye[2] - last.eye[2]) < 1e-3 ? still + 1 : 0;
-      last = now;
-    }
+    const end = await holdUntilMoved(moved.eye, 1000, opt.walkSeconds * 1000);
     await page.keyboard.up('w');
     await page.keyboard.up('Shift');
+    const last = end.eye, still = end.still ? 4 : 0;
     report.walk = { before: before.eye, afterWalking: moved.eye, stopped: last.eye, stoppedStill: still >= 4 };
   }
   report.placeWalks = [];
-  for (const [x, y, z, yaw, seconds] of opt.placeWalks) {
+  for (const [x, y, z, yaw, distance] of opt.placeWalks) {
     await page.evaluate(([e, w]) => window.photowalk.placeAt(e, w), [[x, y, z], yaw]);
     await page.keyboard.down('w');
-    await page.waitForTimeout(seconds * 1000);
+    await holdUntilMoved([x, y, z], distance, 60000);
     await page.keyboard.up('w');
     await frames();
     report.placeWalks.push((await page.evaluate(() => window.photowalk.state())).eye);
@@ -140,7 +151,7 @@ try {
     const before = looked;
     if (pad) {
       await touch('touchStart', pad.x + pad.width / 2, pad.y + pad.height * 0.15);
-      await page.waitForTimeout(1500);
+      await holdUntilMoved(before.eye, 1.0, 30000);
       await touch('touchEnd');
       await frames();
     }
@@ -152,8 +163,8 @@ try {
     // A touch screen under 600 px starts with the panel folded: its title unfolds it.
     if (!(await page.locator('button.pw-tour').isVisible())) await page.locator('.pw-panel h1').click();
     await page.locator('button.pw-tour').click();
-    await page.waitForTimeout(2000);
-    const during = await page.evaluate(() => window.photowalk.state());
+    await holdUntilMoved(before.eye, 1.0, 20000);
+    const during = await state();
     report.tour = { started: during.touring, moved: Math.hypot(during.eye[0] - before.eye[0], during.eye[2] - before.eye[2]) };
   }
   report.fps = await page.evaluate(() => window.photowalk.fps());
