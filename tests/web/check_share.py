@@ -11,7 +11,7 @@ a corridor of the POV-Ray ground truth (corridor_c) and an imported VRML scene, 
 and on the corridor a walk with key events (W, then Shift+W) moves the eye forward,
 keeps it at the avatar's eye height and stops it at the far wall, one avatar radius
 before it; touch: a drag on the view turns it and a thumb on the pad walks forward;
-the tour button plays the tour; in the building, walking left through the
+PageDown, PageUp and the list go to the viewpoints; the tour button plays the tour; in the building, walking left through the
 opening into the wing passes, and beside it the hall's wall stops the eye.
 
 usage: check_share.py PHOTOWALK REPO_ROOT WORK_DIR GROUNDTRUTH_DIR
@@ -87,6 +87,9 @@ def main():
     run([photowalk, "build", shot, "-o", model])
 
     report = page(photowalk, root, work, "corridor", shot, model, ["--walk", "2", "--tour", "--touch", "2"])
+    keys = report["viewpointKeys"]
+    check(keys["afterPageDown"] == 1 and keys["afterPageUp"] == 0 and keys["afterClickingThird"] == 2 and keys["fixed"],
+          f"PageDown, PageUp and a click on the list go to the viewpoints ({keys})")
     walk = report["walk"]
     check(walk["afterWalking"][2] < walk["before"][2] - 0.9, f"W walks forward (z {walk['before'][2]:.2f} -> {walk['afterWalking'][2]:.2f})")
     check(abs(walk["stopped"][1] - walk["before"][1]) < 1e-3, f"the eye keeps its height ({walk['stopped'][1]:.3f} m)")

@@ -4,6 +4,8 @@
 //   loadMs      from navigation to the model shown (window.photowalk.ready)
 //   viewpoints  [{name, psnr}]: each viewpoint's frame against a reference PNG
 //               (`photowalk render --viewpoint N --size WxH`), PSNR in dB over RGB
+//   viewpointKeys  the viewpoint after PageDown from the first, after PageUp, and after a
+//               click on the list's third entry
 //   walk        with --walk VIEWPOINT: the eye before and after walking forward with
 //               key events (W, then Shift+W until it stops), and where it stopped
 //   placeWalks  with --place-walk X,Y,Z,YAW,DISTANCE (repeatable): the eye put there looking
@@ -110,6 +112,21 @@ try {
       }, url);
     }
     report.viewpoints.push(entry);
+  }
+  // The viewpoints as a person reaches them: PageDown, PageUp, and a click on the list.
+  if (names.length > 2) {
+    await page.evaluate(() => window.photowalk.goTo(0));
+    await page.keyboard.press('PageDown');
+    const down = (await state()).viewpoint;
+    await page.keyboard.press('PageUp');
+    const up = (await state()).viewpoint;
+    const folded = !(await page.locator('.pw-panel ul').isVisible());
+    if (folded) await page.locator('.pw-panel h1').click();
+    await page.locator('.pw-panel li button').nth(2).click();
+    if (folded) await page.locator('.pw-panel h1').click(); // as it was
+    await frames();
+    const clicked = await state();
+    report.viewpointKeys = { afterPageDown: down, afterPageUp: up, afterClickingThird: clicked.viewpoint, fixed: clicked.fixed };
   }
   if (opt.walk !== null) {
     await page.evaluate((k) => window.photowalk.goTo(k), opt.walk - 1);
