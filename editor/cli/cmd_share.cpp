@@ -24,7 +24,7 @@ constexpr const char* kUsage =
     "Writes one self-contained web page: the model (binary glTF, textures as JPEG), the\n"
     "viewer (three.js) and what photowalk knows beyond glTF (each viewpoint's exact lens,\n"
     "the avatar, the tour, the dimensions), all inside OUT.html: it opens by double-click\n"
-    "in Chromium or Firefox, from file:// or any static web server, with no network.\n"
+    "in a web browser, from file:// or any static web server, with no network.\n"
     "A shot or a layout is built first, as `photowalk build` does.\n\n"
     "In the page: click the view to look with the mouse (Esc frees it), W A S D or the\n"
     "arrows to walk, Shift to run, PageUp/PageDown or the list for the viewpoints, T or\n"
