@@ -9,6 +9,7 @@
 #include "base/staging.h"
 #include "editor/cli/command.h"
 #include "editor/edit/building.h"
+#include "editor/edit/file_browser.h"
 #include "editor/edit/model_export.h"
 #include "engine/io/model_io.h"
 #include "engine/web/web_page.h"
@@ -33,10 +34,6 @@ constexpr const char* kUsage =
     "  --max-texture PX       a texture's longer side at most PX (default 2048; 256-8192)\n"
     "  --quality Q            the textures' JPEG quality (default 85; 10-100)\n";
 
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 struct Shared {
   engine::Scene scene;
   std::vector<modeling::CorridorModel> corridors;  // none for a model read from a file
@@ -46,7 +43,7 @@ struct Shared {
 // A shot or layout built as `build` builds it, or a model read.
 Result<Shared> sceneToShare(const std::string& input) {
   Shared out;
-  if (!endsWith(input, ".json")) {
+  if (!edit::matchesEndings(fs::path(input).filename().string(), {".json"})) {
     std::vector<std::string> warnings;
     auto scene = engine::loadModel(input, &warnings);
     if (!scene) return scene.error();
@@ -80,7 +77,7 @@ int runShare(Args& args) {
   if (auto finished = args.finish(); !finished) return fail(finished.message());
   if (positionals.size() != 1) return fail("share takes one model, shot or layout; see photowalk share --help");
   if (!output) return fail("share needs -o OUT.html");
-  if (!endsWith(*output, ".html") && !endsWith(*output, ".htm")) return fail(*output + ": the page is HTML: name it .html");
+  if (!edit::matchesEndings(fs::path(*output).filename().string(), {".html", ".htm"})) return fail(*output + ": the page is HTML: name it .html");
   int maxTexturePx = engine::WebPageOptions{}.maxTexturePx, jpegQuality = engine::WebPageOptions{}.jpegQuality;
   if (maxText) {
     auto v = parseNumber(*maxText, "--max-texture");
