@@ -222,6 +222,17 @@ SurfaceStep surfaceStep(const WorkingImage& work, glm::dvec2 a, glm::dvec2 b) {
 // bars, a cabinet's front, where every line drawn has edges along it).
 constexpr double kSureBoundaryStepShare = 0.5;
 constexpr double kSureFarStepGrey = 8.0;
+// Below these (shares of the photo's short side) the box is too small in the photo
+// for its checks to mean anything: a far wall a few dozen pixels across (a long
+// corridor's end, a person before it) has edges along any rectangle drawn on it, and
+// boundaries seen over a sliver between the far wall and the near section (a box
+// whose near end is barely nearer than its far wall) run on from anything. TUNE
+// seeds 0-149: the right exit-0 answers' far walls are 8% of the short side or more
+// across, and two of their boundaries 17% or more long; the wrong ones 3%, and 14%
+// or less.
+constexpr double kSureFarSideOfShortSide = 0.05;
+constexpr double kSureBoundaryStretchOfShortSide = 0.15;
+constexpr int kSureLongBoundaries = 2;
 
 // The doubts a found corridor leaves: where the box's evidence is thin. A wrong far
 // wall (a cabinet's front, a doorway nearer the camera) has the sides of a rectangle,
@@ -259,6 +270,23 @@ void assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& 
   }
   if (dividing < kSureBoundaries) {
     d.doubts.push_back("only " + std::to_string(dividing) + " of the four boundaries divide two surfaces");
+  }
+  const double shortSide = std::min(s.photo.size().width, s.photo.size().height);
+  const double farSide = std::min({glm::length(d.corners[P1].px - d.corners[P2].px), glm::length(d.corners[P3].px - d.corners[P4].px),
+                                   glm::length(d.corners[P1].px - d.corners[P3].px), glm::length(d.corners[P2].px - d.corners[P4].px)});
+  if (farSide < kSureFarSideOfShortSide * shortSide) {
+    d.doubts.push_back("the far wall is " + std::to_string(std::lround(farSide)) +
+                       " px across: too small in the photo to place its corners surely");
+  }
+  int longBoundaries = 0;
+  for (const auto& [farCorner, nearCorner] : kBoundaryEnds) {
+    longBoundaries += glm::length(d.corners[farCorner].px - d.corners[nearCorner].px) >= kSureBoundaryStretchOfShortSide * shortSide;
+  }
+  if (longBoundaries < kSureLongBoundaries) {
+    d.doubts.push_back("the box is shallow in the photo: " + std::to_string(longBoundaries) +
+                       " of its four boundaries run " + std::to_string(std::lround(100 * kSureBoundaryStretchOfShortSide)) +
+                       "% of the photo's short side or more from the far wall (" + std::to_string(kSureLongBoundaries) +
+                       " needed)");
   }
   const std::array<std::pair<const char*, std::array<int, 2>>, 2> kTopAndFoot{{{"top", {P1, P2}}, {"foot", {P3, P4}}}};
   for (const auto& [name, ends] : kTopAndFoot) {
