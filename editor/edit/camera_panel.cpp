@@ -94,29 +94,30 @@ void EditMode::drawCamera(app::Shell& shell) {
   const std::optional<modeling::ExifFocal>& exifFocal = doc_->exifFocal();
   if (exif.present) {
     const std::string camera = exif.make + (exif.make.empty() || exif.model.empty() ? "" : " ") + exif.model;
-    ImGui::Text("EXIF: %s", camera.empty() ? "(no make or model)" : camera.c_str());
-    if (exif.focalLengthMm) ImGui::Text("  FocalLength %.2f mm", *exif.focalLengthMm);
-    if (exif.focalLength35mm) ImGui::Text("  FocalLengthIn35mmFilm %.0f mm", *exif.focalLength35mm);
+    // One line (wrapped): the camera, FocalLength, FocalLengthIn35mmFilm, the sensor.
+    std::string line = "EXIF: " + (camera.empty() ? std::string("(no make or model)") : camera);
+    char part[96];
+    if (exif.focalLengthMm) std::snprintf(part, sizeof part, ", %.2f mm", *exif.focalLengthMm), line += part;
+    if (exif.focalLength35mm) std::snprintf(part, sizeof part, " (35 mm eq. %.0f)", *exif.focalLength35mm), line += part;
     if (exifFocal && exifFocal->focalMm) {
-      ImGui::Text("  sensor %.2f x %.2f mm (FocalPlaneXResolution)", exifFocal->focalMm->sensorWidthMm,
-                  exifFocal->sensorHeightMm.value_or(0.0));
+      std::snprintf(part, sizeof part, ", sensor %.2f x %.2f mm", exifFocal->focalMm->sensorWidthMm,
+                    exifFocal->sensorHeightMm.value_or(0.0));
+      line += part;
     }
-    if (exif.orientation != 1) {
-      wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "  Orientation " + std::to_string(exif.orientation) + ": " +
-                                                           modeling::orientationName(exif.orientation) +
-                                                           " (applied to the photo)");
+    if (exif.orientation != 1) line += ", Orientation " + std::to_string(exif.orientation) + " (applied)";
+    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), line);
+    if (exif.orientation != 1 && ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Orientation %d: %s (applied to the photo)", exif.orientation,
+                        modeling::orientationName(exif.orientation).c_str());
     }
-    if (exifFocal) {
-      const bool inUse = doc_->focalSource() == exifFocal->source;
-      ImGui::BeginDisabled(inUse);
-      if (ImGui::SmallButton(inUse ? "EXIF focal length in use" : "use the EXIF focal length")) {
+    if (exifFocal && doc_->focalSource() != exifFocal->source) {
+      if (ImGui::SmallButton("use the EXIF focal length")) {
         after.focalPx = exifFocal->focalPx;
         after.focalMm = exifFocal->focalMm;
         label = "focal length from EXIF";
       }
       rememberWidget("use EXIF");
-      ImGui::EndDisabled();
-    } else if (exif.focalLengthMm && !shot.focalMm) {
+    } else if (!exifFocal && exif.focalLengthMm && !shot.focalMm) {
       if (ImGui::SmallButton("use the EXIF FocalLength with a sensor")) {
         const double sensor = acrossMm(kSensors[0], shot);
         after.focalMm = metrology::FocalLengthMm{*exif.focalLengthMm, sensor};
@@ -124,17 +125,27 @@ void EditMode::drawCamera(app::Shell& shell) {
         label = "focal length from EXIF";
       }
     }
-  } else {
-    ImGui::TextDisabled("no EXIF in the photo");
   }
-  wrapped(kNoteColour, "focal length from: " + doc_->focalSource());
+  // The EXIF's focal length in use: said in one line, how it was read in its tooltip
+  // (the EXIF line above gives the figures).
+  const std::string source = doc_->focalSource();
+  if (exifFocal && source == exifFocal->source) {
+    wrapped(kNoteColour, "focal length from: the photo's EXIF");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", source.c_str());
+  } else {
+    wrapped(kNoteColour, "focal length from: " + source + (exif.present ? "" : " (no EXIF)"));
+  }
 
   // The focal length: in pixels, or in mm with the sensor's width across the photo.
   int unit = shot.focalMm ? 1 : 0;
   const int unitWas = unit;
+  // The unit on the focal length's own row (the Camera fields stay above the fold
+  // at 1280x720 with the 3D preview open).
   ImGui::RadioButton("px", &unit, 0);
   ImGui::SameLine();
-  ImGui::RadioButton("mm with a sensor width", &unit, 1);
+  ImGui::RadioButton("mm", &unit, 1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the focal length in mm, with the sensor's width across the photo");
+  ImGui::SameLine();
   if (unit != unitWas) {
     if (unit == 1) {
       // Keeps the focal length in pixels: the EXIF's sensor when known, else full frame.
@@ -155,8 +166,8 @@ void EditMode::drawCamera(app::Shell& shell) {
       after.focalMm->sensorWidthMm = v;
       label = "sensor width";
     }
-    ImGui::SetNextItemWidth(220.0f);
-    if (ImGui::BeginCombo("##sensor", "sensor presets")) {
+    ImGui::SameLine();  // the presets: an arrow beside the sensor's field
+    if (ImGui::BeginCombo("##sensor", "sensor presets", ImGuiComboFlags_NoPreview)) {
       for (const SensorPreset& s : kSensors) {
         if (ImGui::Selectable(s.name, std::abs(acrossMm(s, shot) - shot.focalMm->sensorWidthMm) < 1e-9)) {
           after.focalMm->sensorWidthMm = acrossMm(s, shot);  // the lens stays: the focal length in mm is kept
@@ -165,52 +176,19 @@ void EditMode::drawCamera(app::Shell& shell) {
       }
       ImGui::EndCombo();
     }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("sensor presets");
     if (after.focalMm) after.focalPx = after.focalMm->pixels(shot.imageWidth);
-    ImGui::TextDisabled("= %.1f px (the sensor's side across the photo)", shot.focalPx);
   } else {
     if (number("focal px", shot.focalPx, "%.1f")) {
       after.focalPx = v;
       label = "focal length";
     }
   }
-  if (shot.imageWidth > 0 && shot.imageHeight > 0) {
-    ImGui::TextDisabled("35 mm equivalent %.1f mm (by the diagonal)",
-                        shot.focalPx / std::hypot(double(shot.imageWidth), double(shot.imageHeight)) *
-                            std::hypot(36.0, 24.0));
-  }
-
-  // The principal point: the centre unless moved (its handle on the canvas, or here).
-  const glm::dvec2 pp = shot.principalPoint();
-  if (number("principal u px", pp.x, "%.1f", shot.imageWidth)) {
-    after.principalPointPx = glm::dvec2(v, pp.y);
-    label = "principal point";
-  }
-  if (number("principal v px", pp.y, "%.1f", shot.imageHeight)) {
-    after.principalPointPx = glm::dvec2(pp.x, v);
-    label = "principal point";
-  }
-  ImGui::BeginDisabled(!shot.principalPointPx);
-  if (ImGui::SmallButton("reset to centre")) {
-    after.principalPointPx.reset();
-    label = "principal point to the centre";
-  }
-  rememberWidget("reset to centre");
-  ImGui::EndDisabled();
-  ImGui::SameLine();
-  ImGui::TextDisabled(shot.principalPointPx ? "(moved)" : "(the photo's centre) (?)");
-  constexpr const char* kPrincipalHelp =
-      "drag the magenta PP handle to move it; a cropped or shifted photo moves the principal point "
-      "away from its centre, so move it only for such a photo";
-  if (shot.principalPointPx) {
-    wrapped(kWarningColour, kPrincipalHelp);  // moved: the warning stays in view
-  } else if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("%s", kPrincipalHelp);
-  }
-
   // The scale: the camera height, a reference length between two corners, or both
   // (the height scales, the reference is checked).
   bool byHeight = shot.cameraHeightM.has_value();
-  if (ImGui::Checkbox("camera height", &byHeight)) {
+  // Checked, the field beside it names it.
+  if (ImGui::Checkbox(byHeight ? "##camera height" : "camera height", &byHeight)) {
     if (byHeight) {
       const double measured = live_.measurement ? live_.measurement->cameraHeightM : kDefaultCameraHeightM;
       after.cameraHeightM = std::isfinite(measured) && measured > 0 ? measured : kDefaultCameraHeightM;
@@ -223,6 +201,7 @@ void EditMode::drawCamera(app::Shell& shell) {
     }
   }
   rememberWidget("camera height");
+  if (shot.cameraHeightM) ImGui::SameLine();
   if (shot.cameraHeightM && number("camera height m", *shot.cameraHeightM, "%.3f")) {
     after.cameraHeightM = v;
     label = "camera height";
@@ -279,6 +258,47 @@ void EditMode::drawCamera(app::Shell& shell) {
     wrapped(kNoteColour, shot.cameraHeightM ? "the camera height gives the scale; the reference checks it"
                                             : "the reference gives the scale");
   }
+  if (shot.imageWidth > 0 && shot.imageHeight > 0) {
+    const double equivalentMm =
+        shot.focalPx / std::hypot(double(shot.imageWidth), double(shot.imageHeight)) * std::hypot(36.0, 24.0);
+    if (shot.focalMm) {
+      ImGui::TextDisabled("= %.1f px; 35 mm equivalent %.1f mm", shot.focalPx, equivalentMm);
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("pixels by the sensor's side across the photo; the 35 mm equivalent by the diagonal");
+      }
+    } else {
+      ImGui::TextDisabled("35 mm equivalent %.1f mm (by the diagonal)", equivalentMm);
+    }
+  }
+
+  // The principal point: the centre unless moved (its handle on the canvas, or here).
+  const glm::dvec2 pp = shot.principalPoint();
+  if (number("principal u px", pp.x, "%.1f", shot.imageWidth)) {
+    after.principalPointPx = glm::dvec2(v, pp.y);
+    label = "principal point";
+  }
+  if (number("principal v px", pp.y, "%.1f", shot.imageHeight)) {
+    after.principalPointPx = glm::dvec2(pp.x, v);
+    label = "principal point";
+  }
+  ImGui::BeginDisabled(!shot.principalPointPx);
+  if (ImGui::SmallButton("reset to centre")) {
+    after.principalPointPx.reset();
+    label = "principal point to the centre";
+  }
+  rememberWidget("reset to centre");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled(shot.principalPointPx ? "(moved)" : "(the photo's centre) (?)");
+  constexpr const char* kPrincipalHelp =
+      "drag the magenta PP handle to move it; a cropped or shifted photo moves the principal point "
+      "away from its centre, so move it only for such a photo";
+  if (shot.principalPointPx) {
+    wrapped(kWarningColour, kPrincipalHelp);  // moved: the warning stays in view
+  } else if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", kPrincipalHelp);
+  }
+
   // The lens's radial distortion (OpenCV's k1, k2 over the focal-normalised radius):
   // unknown (measure then fits it to the corners when they show one), none, or given.
   if (shot.distortion) {

@@ -132,7 +132,8 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     shot.focalMm = doc.exifFocal_->focalMm;  // saved as focal_mm with sensor_width_mm when the sensor is known
     detectOptions.focalPx = shot.focalPx;
     doc.openedFocalSource_ = doc.exifFocal_->source;
-    doc.notes_.push_back("focal length " + fixed(shot.focalPx, 1) + " px from the photo's " + doc.exifFocal_->source);
+    // (How: the Camera panel's "focal length from" line.)
+    doc.notes_.push_back("focal length " + fixed(shot.focalPx, 1) + " px from the photo's EXIF");
   }
   auto detection = metrology::detect::detectCorridor(doc.photo_, detectOptions);
   if (detection && detection->found) {
@@ -150,8 +151,8 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
       lowest = std::min(lowest, detection->corners[k].confidence);
       highest = std::max(highest, detection->corners[k].confidence);
     }
-    doc.notes_.push_back("corners detected automatically (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) +
-                         "): check each one, the lowest first");
+    doc.notes_.push_back("corners detected (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) +
+                         "): check each, the lowest first");
     if (!detection->distortion.isNone()) {
       shot.distortion = detection->distortion;
       doc.notes_.push_back("lens distortion k1 " + fixed(detection->distortion.k1, 3) + " found from " +
@@ -188,10 +189,10 @@ std::vector<std::string> Document::notes() const {
   }
   if (focalSource().rfind("default:", 0) == 0) {
     notes.push_back("focal length assumed " + fixed(shot_.focalPx, 0) +
-                    " px (a 28 mm-equivalent lens): set it in the Camera panel");
+                    " px (a 28 mm-equivalent lens): set it below");
   }
   if (inputOrigins().cameraHeightAssumed) {
-    notes.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it in the Camera panel");
+    notes.push_back("camera height assumed " + fixed(kDefaultCameraHeightM, 2) + " m: set it below");
   }
   return notes;
 }

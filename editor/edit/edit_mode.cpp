@@ -124,7 +124,12 @@ void EditMode::layOut(app::Shell& shell) {
   preview_.setRect({});
   previewToolbar_ = {};
   if (doc_ && preview_.shown()) {
-    const double paneHeight = std::floor(std::min(0.75 * panelWidthPx_, 0.45 * height));
+    // A 4:3 pane at most, and at most 45% of the height; in a short window (720 px) it
+    // gives way, down to 30% of it, so that the panel above keeps kMinPanelAbovePreviewPx
+    // (the Camera fields within reach without a scroll).
+    constexpr double kMinPanelAbovePreviewPx = 520;
+    const double paneHeight = std::floor(std::min({0.75 * panelWidthPx_, 0.45 * height,
+                                                   std::max(0.3 * height, height - kMinPanelAbovePreviewPx)}));
     const double left = width - panelWidthPx_;
     preview_.setRect({{left, height - paneHeight}, {width, height}});
     previewToolbar_ = {{left, height - paneHeight - kPreviewToolbarPx}, {width, height - paneHeight}};

@@ -65,7 +65,10 @@ void EditMode::drawUi(app::Shell& shell) {
   if (doc_) drawCanvasOverlay();
   else drawEmptyHint(shell);
   drawPanel(shell);
-  preview_.drawUi(previewToolbar_);
+  if (!preview_.drawUi(previewToolbar_, /*showBox=*/true)) {
+    preview_.setShown(false);
+    layOut(shell);
+  }
   drawFiles(shell);
   if (showKeys_) {
     ImGui::SetNextWindowPos({16, 40}, ImGuiCond_Appearing);
@@ -102,10 +105,9 @@ void EditMode::drawPanel(app::Shell& shell) {
     return;
   }
   const bool dirty = doc_->dirty();
+  // The file's name; where it saves (its whole path) when the name is hovered.
   ImGui::Text("%s%s", doc_->path().filename().string().c_str(), dirty ? "  (unsaved)" : "");
-  ImGui::PushStyleColor(ImGuiCol_Text, kNoteColour);
-  ImGui::TextWrapped("saves to %s", doc_->path().string().c_str());
-  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("saves to %s", doc_->path().string().c_str());
   // Three rows: the file, the edits and the views, the exports and the preview.
   if (ImGui::Button("Save")) save(shell);
   ImGui::SameLine();
@@ -131,17 +133,20 @@ void EditMode::drawPanel(app::Shell& shell) {
     if (ImGui::Button("Plan (B)")) shell.requestMode(planMode_);
   }
   drawExportButtons(shell);
-  // The preview's box beside the exports when it fits in the panel, else below them.
-  const float boxWidth = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
-                         ImGui::CalcTextSize("3D preview (P)").x;
-  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + boxWidth <=
-      ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
-    ImGui::SameLine();
-  }
-  bool preview = preview_.shown();
-  if (ImGui::Checkbox("3D preview (P)", &preview)) {
-    preview_.setShown(preview);
-    layOut(shell);
+  // The preview's box: in its toolbar while it is shown; else beside the exports when it
+  // fits in the panel, else below them.
+  if (!preview_.shown()) {
+    const float boxWidth = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                           ImGui::CalcTextSize("3D preview (P)").x;
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + boxWidth <=
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) {
+      ImGui::SameLine();
+    }
+    bool preview = false;
+    if (ImGui::Checkbox("3D preview (P)", &preview)) {
+      preview_.setShown(preview);
+      layOut(shell);
+    }
   }
   if (files_.exporting) ImGui::TextDisabled("exporting %s...", files_.exporting->path.filename().string().c_str());
   if (pendingWalk_) {
@@ -172,10 +177,23 @@ void EditMode::drawMeasurement() {
   const float lines = 5.0f;
   ImGui::BeginChild("##dimensions", ImVec2(0.0f, lines * ImGui::GetTextLineHeightWithSpacing()), false);
   if (m) {
-    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "width   " + metrology::dimensionWithSource(*m, 0));
-    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "height  " + metrology::dimensionWithSource(*m, 1));
-    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text), "length  " + metrology::dimensionWithSource(*m, 2));
-    ImGui::TextDisabled("(\xc2\xb1 one sigma of every input)");
+    // Where one input is most of all three ±, it is said once, under them (a line each
+    // instead of two).
+    const metrology::SigmaSource* top = metrology::dominantSigmaSource(*m, 0);
+    bool shared = top && m->sigmaSources.size() > 1;
+    for (int which = 1; shared && which < 3; ++which) {
+      const metrology::SigmaSource* other = metrology::dominantSigmaSource(*m, which);
+      shared = other && other->name == top->name;
+    }
+    static const char* const kNames[3] = {"width   ", "height  ", "length  "};
+    for (int which = 0; which < 3; ++which) {
+      wrapped(ImGui::GetStyleColorVec4(ImGuiCol_Text),
+              kNames[which] + (shared ? metrology::dimensionText(metrology::dimensionOf(m->size, which),
+                                                                 metrology::dimensionOf(m->sigma, which))
+                                      : metrology::dimensionWithSource(*m, which)));
+    }
+    wrapped(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
+            shared ? "(\xc2\xb1 1 sigma, mostly: " + top->name + ")" : "(\xc2\xb1 one sigma of every input)");
   } else {
     wrapped(kErrorColour, "cannot measure: " + live_.error);
   }

@@ -258,8 +258,8 @@ bool Preview::onInput(const app::InputEvent& event) {
   return taken;
 }
 
-void Preview::drawUi(const WindowRect& toolbar) {
-  if (!shown_ || toolbar.empty()) return;
+bool Preview::drawUi(const WindowRect& toolbar, bool showBox) {
+  if (!shown_ || toolbar.empty()) return true;
   ImGui::SetNextWindowPos({float(toolbar.min.x), float(toolbar.min.y)}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({float(toolbar.size().x), float(toolbar.size().y)}, ImGuiCond_Always);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {4.0f, 4.0f});
@@ -267,9 +267,16 @@ void Preview::drawUi(const WindowRect& toolbar) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::PopStyleVar();
+  bool keep = true;
+  if (showBox) {
+    ImGui::Checkbox("3D preview (P)", &keep);
+    ImGui::SameLine();
+  }
   const bool haveModel = scene_ && shownDocument_ == documentId_;
   ImGui::BeginDisabled(!haveModel);
   if (ImGui::Button("Photo camera")) toPhotoCamera();
+  photoButton_ = {{ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y},
+                  {ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y}};
   ImGui::EndDisabled();
   ImGui::SameLine();
   char status[96];
@@ -302,6 +309,7 @@ void Preview::drawUi(const WindowRect& toolbar) {
                   float(rect_.size().x) - 16);
     list->PopClipRect();
   }
+  return keep;
 }
 
 std::optional<engine::SceneView> Preview::view() const {
@@ -327,6 +335,8 @@ ordered_json Preview::trace(const metrology::Shot* shot) const {
   row["build_ms"] = haveModel ? ordered_json(buildMs_) : ordered_json(nullptr);
   row["error"] = error_.empty() ? ordered_json(nullptr) : ordered_json(error_);
   row["frame_interval_ms"] = frameIntervalMs_;
+  const glm::dvec2 button = photoButton_.size();
+  row["photo_button"] = ordered_json::array({photoButton_.min.x, photoButton_.min.y, button.x, button.y});
   return row;
 }
 

@@ -99,8 +99,10 @@ class Preview {
   bool onInput(const app::InputEvent& event);
   bool orbiting() const { return orbit_.orbiting(); }
 
-  // The pane's toolbar (over the top of `toolbar`) and its status text.
-  void drawUi(const WindowRect& toolbar);
+  // The pane's toolbar (over the top of `toolbar`) and its status text. With
+  // `showBox`, it starts with the "3D preview (P)" box, ticked: false when it was
+  // unticked this frame (the caller hides the pane and lays the window out again).
+  bool drawUi(const WindowRect& toolbar, bool showBox = false);
   // The scene view to draw, when there is a model and the pane is shown.
   std::optional<engine::SceneView> view() const;
 
@@ -151,6 +153,7 @@ class Preview {
 
   std::chrono::steady_clock::time_point lastUpdate_{};
   double frameIntervalMs_ = 0;  // wall clock between the last two steps
+  WindowRect photoButton_;      // the toolbar's "Photo camera" button as last drawn (the trace's)
 };
 
 }  // namespace pw::edit

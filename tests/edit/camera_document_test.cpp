@@ -66,7 +66,7 @@ TEST(CameraDocument, APhotoAloneTakesItsFocalLengthFromExif) {
   EXPECT_EQ(doc->focalSource().rfind("EXIF FocalLength 5.02 mm with FocalPlaneXResolution 1600.0 px/cm", 0), 0u)
       << doc->focalSource();
   bool noted = false;
-  for (const std::string& note : doc->notes()) noted |= note.find("px from the photo's EXIF FocalLength") != std::string::npos;
+  for (const std::string& note : doc->notes()) noted |= note.find("px from the photo's EXIF") != std::string::npos;
   EXPECT_TRUE(noted);
 
   // Saved: in mm with the sensor, and where it came from.

@@ -56,13 +56,14 @@ class EditCamera : public ::testing::Test {
   }
 
   // Runs the editor on the EXIF photo with `script`, the 3D preview hidden (P) so that the
-  // whole Camera panel fits in the window.
-  std::vector<Row> edit(const std::string& name, const std::string& script) {
+  // whole Camera panel fits in the window (`hidePreview`), at `width` x `height`.
+  std::vector<Row> edit(const std::string& name, const std::string& script, bool hidePreview = true, int width = kWidth,
+                        int height = kHeight) {
     const fs::path scriptPath = dir_ / (name + ".replay"), tracePath = dir_ / (name + ".jsonl");
-    std::ofstream(scriptPath) << "0 key P down\n0 key P up\n" << script;
+    std::ofstream(scriptPath) << (hidePreview ? "0 key P down\n0 key P up\n" : "") << script;
     fs::remove(tracePath);
-    const CommandRun run = photowalk("edit " + (dir_ / "turned.jpg").string() + " --size " + std::to_string(kWidth) +
-                                     "x" + std::to_string(kHeight) + " --no-vsync --replay " + scriptPath.string() +
+    const CommandRun run = photowalk("edit " + (dir_ / "turned.jpg").string() + " --size " + std::to_string(width) +
+                                     "x" + std::to_string(height) + " --no-vsync --replay " + scriptPath.string() +
                                      " --trace " + tracePath.string());
     EXPECT_EQ(run.exitCode, 0) << run.output;
     return readTrace(tracePath);
@@ -115,6 +116,23 @@ TEST_F(EditCamera, AnExifPhotoOnItsSideOpensUprightWithItsFocalLength) {
   ASSERT_TRUE(rows[0].size);
   EXPECT_NEAR(rows[0].size->x, truth.widthM, 0.05);
   EXPECT_TRUE(rows[0].raw.at("handle_warnings").empty()) << rows[0].raw.at("handle_warnings").dump();
+}
+
+// Issue 23: at 1280x720 with the 3D preview open, a new photo's notes (EXIF focal
+// length, corners detected, camera height assumed) and its measurement took the panel
+// down to the Camera header: the camera height, which the notes ask for, needed a scroll.
+TEST_F(EditCamera, TheFocalLengthAndCameraHeightAreAboveThePreviewAt1280x720) {
+  const auto rows = edit("fold", "3 quit\n", /*hidePreview=*/false, 1280, 720);
+  ASSERT_GE(rows.size(), 3u);
+  const auto& preview = rows.back().raw.at("preview");
+  ASSERT_TRUE(preview.at("shown").get<bool>()) << preview.dump();
+  const double panelBottom = preview.at("rect")[1].get<double>() - 30;  // the preview's toolbar above its pane
+  const auto& widgets = rows.back().raw.at("camera").at("widgets");
+  for (const char* name : {"focal mm", "camera height", "camera height m"}) {
+    ASSERT_TRUE(widgets.contains(name)) << name << " in " << widgets.dump();
+    const auto& r = widgets[name];
+    EXPECT_LE(r[1].get<double>() + r[3].get<double>(), panelBottom) << "'" << name << "' below the fold: " << r.dump();
+  }
 }
 
 TEST_F(EditCamera, ThePrincipalPointHandleDragsAndUndoesAndAReferenceLengthSetsTheScale) {

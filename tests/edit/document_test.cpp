@@ -64,7 +64,7 @@ TEST(Document, PhotoWithoutCornersGetsThemFromDetectionWithConfidences) {
     EXPECT_LE(*doc->detectionConfidence(k), 1.0);
   }
   ASSERT_FALSE(doc->notes().empty());
-  EXPECT_NE(doc->notes().front().find("detected automatically"), std::string::npos) << doc->notes().front();
+  EXPECT_NE(doc->notes().front().find("corners detected (confidence"), std::string::npos) << doc->notes().front();
 
   // A corner moved is no longer the detection's: its confidence goes.
   Shot moved = doc->shot();

@@ -111,7 +111,7 @@ TEST_F(Edit, APhotoWithoutCornersGetsThemFromDetection) {
   ASSERT_TRUE(rows[0].path.has_value());
   EXPECT_EQ(fs::path(*rows[0].path), dir_ / "corridor_b.shot.json");
   EXPECT_TRUE(rows[0].dirty);
-  EXPECT_NE(output.find("corners detected automatically (confidence"), std::string::npos) << output;
+  EXPECT_NE(output.find("corners detected (confidence"), std::string::npos) << output;
 }
 
 TEST_F(Edit, DraggingAHandleMovesItsCornerByTheDragOverTheScaleAtThreeZooms) {

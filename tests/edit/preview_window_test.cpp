@@ -27,7 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 using pw::test::CommandRun;
 
-constexpr int kWidth = 960, kHeight = 600;  // the pane is the lower right 288 x 216, under a 30 px toolbar
+constexpr int kWidth = 960, kHeight = 720;  // the pane is the lower right 288 x 216, under a 30 px toolbar
 
 // The "preview" field of a trace row.
 struct PreviewRow {
@@ -155,7 +155,8 @@ const OrbitRun& orbitRun() {
     if (first.empty()) return r;
     r.rect = previewOf(first[0]).rect;
     const glm::dvec2 centre(r.rect.x + r.rect.z / 2, r.rect.y + r.rect.w / 2);
-    const glm::dvec2 button(r.rect.x + 40, r.rect.y - 15);  // "Photo camera", in the toolbar over the pane
+    const auto& b = first.back().raw.at("preview").at("photo_button");  // in the toolbar over the pane (drawn by frame 1)
+    const glm::dvec2 button(b[0].get<double>() + 0.5 * b[2].get<double>(), b[1].get<double>() + 0.5 * b[3].get<double>());
     Script s;
     s.at(1, "preview-wait").at(2, "capture preview_photo.png");
     s.drag(4, centre, {90, 35}, 6).move(12, centre).at(12, "wheel -3").at(14, "capture preview_orbit.png");
@@ -183,7 +184,7 @@ cv::Mat photoInPane(const glm::dvec4& rect) {
 TEST_F(Preview, ThePaneIsTheLowerPartOfThePanelsColumnWithTheModelDrawnInIt) {
   const OrbitRun& run = orbitRun();
   ASSERT_GE(run.rows.size(), 22u);
-  EXPECT_EQ(run.rect, glm::dvec4(672, 384, 288, 216));
+  EXPECT_EQ(run.rect, glm::dvec4(672, 504, 288, 216));
   const PreviewRow at = previewOf(run.rows[1]);  // after preview-wait
   EXPECT_TRUE(at.shown);
   EXPECT_EQ(at.builtFrom.value_or("null"), "full");
