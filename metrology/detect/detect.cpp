@@ -50,6 +50,13 @@ constexpr double kRunOnCoverage = 0.5;  // of the stretch just inside a far corn
 constexpr double kMinSecondPointOffsetOfLongSide = 0.02;
 constexpr double kFocalSettledShare = 0.005;
 constexpr int kFocalIterations = 5;
+// An end's corners where the boundaries meet the far wall's sides (completeFromFarWall):
+// the boundaries looked for within this of the rays through the corners found, and the
+// corners moved when both of a side's are beyond it by more than kEndBeyondSidePx and
+// less than this share of the far wall's height (farther is another wall's line).
+constexpr double kEndSearchRad = 6.0 * 3.14159265358979 / 180;
+constexpr double kEndBeyondSidePx = 1.0;
+constexpr double kEndBeyondSideOfSide = 0.3;
 // Two fits whose far walls are within this (pixels, worst corner) agree.
 constexpr double kAgreementPx = 2.0;
 
@@ -375,6 +382,60 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
       throughCorners.angle[b] = std::atan2(p->y - vp.y, p->x - vp.x);
     }
     doubt(d, std::string("the far wall's ") + kSideNames[hidden] + " edge is hidden: its corners are where the boundaries meet its sides");
+  }
+  // Where the walls end before the wall seen beyond them (an open end: a hall's far wall,
+  // the floor running on under the opening) or a trim runs along the far wall's foot or
+  // top (a skirting board, a cornice), the top and foot found are a few pixels inside the
+  // box's end: its corners are where the boundaries, the wall meeting the floor or the
+  // ceiling along the corridor, meet the far wall's sides. The boundaries for that are
+  // looked for afresh (the rays above were put through the corners found): the sharpest
+  // colour step of the angular profile within kEndSearchRad of each, fitted at full
+  // resolution (TUNE seeds 0-149: open ends right in 2 of 32 before). The rays through
+  // the corners found stay the evidence the box is judged by (assess): where the corners
+  // moved far, they no longer run on from them, and the answer is not a sure one.
+  {
+    std::array<double, kBoundaryCount> around{}, reach{};
+    for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
+    const RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach);
+    std::array<glm::dvec2, kBoundaryCount> stepDirection{};
+    for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
+    const auto afresh = refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx);
+    constexpr std::array<int, 4> kBoundaryOfCorner = {kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight};
+    constexpr std::array<int, 4> kVerticalOf = {kLeftSide, kRightSide, kLeftSide, kRightSide};
+    const double sideLength = std::min(glm::length(far.corners[P1] - far.corners[P3]), glm::length(far.corners[P2] - far.corners[P4]));
+    for (int side : {kTopSide, kBottomSide}) {
+      if (side == hidden) continue;
+      std::array<glm::dvec2, 2> at{};
+      double least = std::numeric_limits<double>::infinity(), most = 0;
+      bool met = true;
+      for (int n = 0; n < 2 && met; ++n) {
+        const int k = kSideCorners[side][n], b = kBoundaryOfCorner[k];
+        const std::optional<EdgeLine>& ray = afresh[b].fit;
+        std::optional<glm::dvec2> p;
+        if (ray && ray->coverage >= kSureBoundaryCoverage) p = intersect(ray->line, far.sides[kVerticalOf[k]].line);
+        if (!p) {
+          met = false;
+          break;
+        }
+        // How far beyond the side found, away from the vanishing point.
+        const glm::dvec3 l = far.sides[side].line;
+        const double beyond = glm::dot(l, homogeneous(*p)) * (glm::dot(l, homogeneous(vp)) > 0 ? -1.0 : 1.0);
+        least = std::min(least, beyond), most = std::max(most, beyond);
+        at[n] = *p;
+      }
+      // (Both corners are moved, each onto its boundary: the two need not be beyond the
+      // side by as much; with noise, one end's boundary is often found farther than the
+      // other's (TUNE seeds 0-299, JPEG q70 and noise: requiring them to agree within
+      // 2.5 px lost 4 right answers).)
+      if (!met || !(least > kEndBeyondSidePx && most < kEndBeyondSideOfSide * sideLength)) continue;
+      for (int n = 0; n < 2; ++n) {
+        const int k = kSideCorners[side][n], b = kBoundaryOfCorner[k];
+        far.corners[k] = at[n];
+        d.corners[k].px = at[n];
+        d.corners[k].sigmaPx = std::hypot(afresh[b].fit->positionSigmaPx(), far.sides[kVerticalOf[k]].positionSigmaPx());
+        throughCorners.angle[b] = std::atan2(at[n].y - vp.y, at[n].x - vp.x);
+      }
+    }
   }
   const CrossSectionFamily nearFamily(s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
                                       throughCorners);
