@@ -27,23 +27,6 @@
 
 namespace pw::metrology {
 
-enum class PointSurface { kFloor, kCeiling, kLeftWall, kRightWall, kFarWall, kAbove };
-// "floor", "ceiling", "wall:left", "wall:right", "wall:far", "above:NAME" (the name apart).
-std::string surfaceName(PointSurface surface);
-// From those words; nullopt for anything else. `above` receives NAME for "above:NAME".
-std::optional<PointSurface> surfaceFromName(const std::string& text, std::string* above);
-
-struct PointOn {
-  PointSurface surface = PointSurface::kFloor;
-  std::string above;  // for kAbove: the point this one stands above (listed before it)
-};
-
-struct ImagePoint {
-  std::string name;
-  glm::dvec2 px{0.0};  // where the photo shows it (through its lens)
-  PointOn on;
-};
-
 struct LocatedPoint {
   std::string name;
   glm::dvec3 m{0.0};  // in the corridor's frame, metres
@@ -56,18 +39,6 @@ struct LocatedPoint {
 // or unknown, a ray that misses its surface (the point above the horizon on the floor,
 // behind the camera), a ray parallel to the vertical it should meet.
 Result<std::vector<LocatedPoint>> locatePoints(const Measurement& measurement, const std::vector<ImagePoint>& points);
-
-// What is measured between two named points.
-enum class ObjectQuantity {
-  kDistance,  // |B - A|
-  kHeight,    // B.y - A.y: how far B is above A
-};
-const char* quantityName(ObjectQuantity quantity);
-
-struct ObjectMeasure {
-  ObjectQuantity quantity = ObjectQuantity::kDistance;
-  std::string from, to;
-};
 
 struct ObjectResult {
   ObjectMeasure asked;

@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -56,6 +57,40 @@ struct FocalLengthMm {
   bool operator==(const FocalLengthMm&) const = default;
 };
 
+// Points on objects in the photo and what to measure between them (object_measure.h
+// places and measures them; README "Measuring objects").
+enum class PointSurface { kFloor, kCeiling, kLeftWall, kRightWall, kFarWall, kAbove };
+// "floor", "ceiling", "wall:left", "wall:right", "wall:far", "above:NAME" (the name apart).
+std::string surfaceName(PointSurface surface);
+// From those words; nullopt for anything else. `above` receives NAME for "above:NAME".
+std::optional<PointSurface> surfaceFromName(const std::string& text, std::string* above);
+
+struct PointOn {
+  PointSurface surface = PointSurface::kFloor;
+  std::string above;  // for kAbove: the point this one stands above (listed before it)
+  bool operator==(const PointOn&) const = default;
+};
+
+struct ImagePoint {
+  std::string name;
+  glm::dvec2 px{0.0};  // where the photo shows it (through its lens)
+  PointOn on;
+  bool operator==(const ImagePoint&) const = default;
+};
+
+// What is measured between two named points.
+enum class ObjectQuantity {
+  kDistance,  // |B - A|
+  kHeight,    // B.y - A.y: how far B is above A
+};
+const char* quantityName(ObjectQuantity quantity);
+
+struct ObjectMeasure {
+  ObjectQuantity quantity = ObjectQuantity::kDistance;
+  std::string from, to;
+  bool operator==(const ObjectMeasure&) const = default;
+};
+
 struct Shot {
   std::string imagePath;  // as resolved for opening (relative to the shot file's folder)
   int imageWidth = 0;     // filled from the image when it is loaded
@@ -73,8 +108,12 @@ struct Shot {
   // them. Unset: not known (measure may estimate it from the corners, measure.h); set
   // to zero: known to be none.
   std::optional<RadialDistortion> distortion;
+  // Named points on objects in the photo and the distances and heights asked between
+  // them (the shot file's "points" and "measurements").
+  std::vector<ImagePoint> points;
+  std::vector<ObjectMeasure> measurements;
 
-  // Every field, the distortion included (an edit of any of them is an edit).
+  // Every field, the distortion and the points included (an edit of any of them is an edit).
   bool operator==(const Shot&) const = default;
 
   glm::dvec2 principalPoint() const {

@@ -131,12 +131,59 @@ Status fillFocal(const fs::path& path, std::optional<double> givenPx, bool assum
   return {};
 }
 
+// A shot file's own points and measurements (README "Measuring objects"):
+//   "points": [{"name": "feet", "px": [u, v], "on": "floor"}, ...],
+//   "measurements": [{"height": ["feet", "head"]}, {"distance": ["a", "b"]}, ...]
+Status readShotObjects(const json& fields, const std::string& where, std::vector<metrology::ImagePoint>& points,
+                       std::vector<metrology::ObjectMeasure>& objects) {
+  if (fields.contains("points")) {
+    const json& list = fields["points"];
+    const std::string form = "points is [{\"name\": NAME, \"px\": [u, v], \"on\": SURFACE}, ...]";
+    if (!list.is_array()) return makeError(where + ": " + form);
+    for (size_t i = 0; i < list.size(); ++i) {
+      const json& p = list[i];
+      const std::string at = where + ": points[" + std::to_string(i) + "]";
+      if (!p.is_object() || !p.contains("name") || !p["name"].is_string() || !p.contains("px") || !p["px"].is_array() ||
+          p["px"].size() != 2 || !p["px"][0].is_number() || !p["px"][1].is_number()) {
+        return makeError(at + ": " + form);
+      }
+      metrology::ImagePoint point;
+      point.name = p["name"].get<std::string>();
+      point.px = {p["px"][0].get<double>(), p["px"][1].get<double>()};
+      const std::string on = p.contains("on") && p["on"].is_string() ? p["on"].get<std::string>() : "floor";
+      auto surface = metrology::surfaceFromName(on, &point.on.above);
+      if (!surface) return makeError(at + ": \"on\" is floor, ceiling, wall:left, wall:right, wall:far or above:NAME");
+      point.on.surface = *surface;
+      points.push_back(point);
+    }
+  }
+  if (fields.contains("measurements")) {
+    const json& list = fields["measurements"];
+    const std::string form = "measurements is [{\"distance\": [A, B]} or {\"height\": [A, B]}, ...]";
+    if (!list.is_array()) return makeError(where + ": " + form);
+    for (size_t i = 0; i < list.size(); ++i) {
+      const json& m = list[i];
+      bool read = false;
+      for (auto quantity : {metrology::ObjectQuantity::kDistance, metrology::ObjectQuantity::kHeight}) {
+        const char* key = metrology::quantityName(quantity);
+        if (!m.is_object() || !m.contains(key)) continue;
+        const json& ends = m[key];
+        if (!ends.is_array() || ends.size() != 2 || !ends[0].is_string() || !ends[1].is_string()) break;
+        objects.push_back({quantity, ends[0].get<std::string>(), ends[1].get<std::string>()});
+        read = true;
+      }
+      if (!read) return makeError(where + ": measurements[" + std::to_string(i) + "]: " + form);
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 // The fields readShotFile reads and writeShotFile writes.
 constexpr const char* kShotFields[] = {"image",           "image_size",      "focal_px",  "focal_mm",
                                        "sensor_width_mm", "principal_point", "camera_height_m", "corners_px",
-                                       "reference",       "distortion"};
+                                       "reference",       "distortion",      "points",          "measurements"};
 
 Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bool allowNoScale) {
   const std::string where = path.string();
@@ -251,6 +298,7 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bo
     }
     shot.distortion = d;
   }
+  if (Status read = readShotObjects(doc, where, shot.points, shot.measurements); !read) return makeError(read.message());
   if (doc.contains("image_size")) {
     const json& size = doc["image_size"];
     if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
@@ -356,6 +404,22 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
                         {"length_m", shot.reference->lengthM}};
   }
   if (shot.distortion) doc["distortion"] = {{"k1", shot.distortion->k1}, {"k2", shot.distortion->k2}};
+  if (!shot.points.empty()) {
+    json points = json::array();
+    for (const metrology::ImagePoint& p : shot.points) {
+      const std::string on = metrology::surfaceName(p.on.surface) +
+                             (p.on.surface == metrology::PointSurface::kAbove ? ":" + p.on.above : std::string());
+      points.push_back({{"name", p.name}, {"px", {p.px.x, p.px.y}}, {"on", on}});
+    }
+    doc["points"] = points;
+  }
+  if (!shot.measurements.empty()) {
+    json measurements = json::array();
+    for (const metrology::ObjectMeasure& m : shot.measurements) {
+      measurements.push_back({{metrology::quantityName(m.quantity), {m.from, m.to}}});
+    }
+    doc["measurements"] = measurements;
+  }
   return doc;
 }
 

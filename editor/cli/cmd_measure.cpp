@@ -101,53 +101,6 @@ Result<metrology::ObjectMeasure> parseObjectMeasure(const std::string& text, met
   return metrology::ObjectMeasure{quantity, text.substr(0, comma), text.substr(comma + 1)};
 }
 
-// A shot file's own points and measurements (README "Measuring objects"):
-//   "points": [{"name": "feet", "px": [u, v], "on": "floor"}, ...],
-//   "measurements": [{"height": ["feet", "head"]}, {"distance": ["a", "b"]}, ...]
-Status readShotObjects(const nlohmann::json& fields, const std::string& where, std::vector<metrology::ImagePoint>& points,
-                       std::vector<metrology::ObjectMeasure>& objects) {
-  if (fields.contains("points")) {
-    const nlohmann::json& list = fields["points"];
-    const std::string form = "points is [{\"name\": NAME, \"px\": [u, v], \"on\": SURFACE}, ...]";
-    if (!list.is_array()) return makeError(where + ": " + form);
-    for (size_t i = 0; i < list.size(); ++i) {
-      const nlohmann::json& p = list[i];
-      const std::string at = where + ": points[" + std::to_string(i) + "]";
-      if (!p.is_object() || !p.contains("name") || !p["name"].is_string() || !p.contains("px") || !p["px"].is_array() ||
-          p["px"].size() != 2 || !p["px"][0].is_number() || !p["px"][1].is_number()) {
-        return makeError(at + ": " + form);
-      }
-      metrology::ImagePoint point;
-      point.name = p["name"].get<std::string>();
-      point.px = {p["px"][0].get<double>(), p["px"][1].get<double>()};
-      const std::string on = p.contains("on") && p["on"].is_string() ? p["on"].get<std::string>() : "floor";
-      auto surface = metrology::surfaceFromName(on, &point.on.above);
-      if (!surface) return makeError(at + ": \"on\" is floor, ceiling, wall:left, wall:right, wall:far or above:NAME");
-      point.on.surface = *surface;
-      points.push_back(point);
-    }
-  }
-  if (fields.contains("measurements")) {
-    const nlohmann::json& list = fields["measurements"];
-    const std::string form = "measurements is [{\"distance\": [A, B]} or {\"height\": [A, B]}, ...]";
-    if (!list.is_array()) return makeError(where + ": " + form);
-    for (size_t i = 0; i < list.size(); ++i) {
-      const nlohmann::json& m = list[i];
-      bool read = false;
-      for (auto quantity : {metrology::ObjectQuantity::kDistance, metrology::ObjectQuantity::kHeight}) {
-        const char* key = metrology::quantityName(quantity);
-        if (!m.is_object() || !m.contains(key)) continue;
-        const nlohmann::json& ends = m[key];
-        if (!ends.is_array() || ends.size() != 2 || !ends[0].is_string() || !ends[1].is_string()) break;
-        objects.push_back({quantity, ends[0].get<std::string>(), ends[1].get<std::string>()});
-        read = true;
-      }
-      if (!read) return makeError(where + ": measurements[" + std::to_string(i) + "]: " + form);
-    }
-  }
-  return {};
-}
-
 // The points and objects as measure's JSON has them.
 void addObjects(nlohmann::ordered_json& doc, const std::vector<metrology::ImagePoint>& asked,
                 const metrology::PointMeasurement& measured) {
@@ -269,16 +222,9 @@ int runMeasure(Args& args) {
 
   auto loaded = modeling::loadShot(shotPath, focalPx, assumeDefaults);
   if (!loaded) return fail(loaded.message());
-  {
-    // The shot file's own points and measurements first, then the command line's.
-    std::vector<metrology::ImagePoint> filePoints;
-    std::vector<metrology::ObjectMeasure> fileObjects;
-    if (Status read = readShotObjects(loaded->otherFields, shotPath, filePoints, fileObjects); !read) {
-      return fail(read.message());
-    }
-    points.insert(points.begin(), filePoints.begin(), filePoints.end());
-    objects.insert(objects.begin(), fileObjects.begin(), fileObjects.end());
-  }
+  // The shot file's own points and measurements first, then the command line's.
+  points.insert(points.begin(), loaded->shot.points.begin(), loaded->shot.points.end());
+  objects.insert(objects.begin(), loaded->shot.measurements.begin(), loaded->shot.measurements.end());
   if (sheetPath) {
     if (auto image = checkImageExtension(*sheetPath, "--sheet"); !image) return fail(image.message());
     if (auto distinct = checkNotAnInput(*sheetPath, "--sheet",
