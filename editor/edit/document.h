@@ -67,6 +67,14 @@ class Document {
   static Result<Document> open(const std::filesystem::path& path, const OpenOptions& options = {});
 
   const metrology::Shot& shot() const { return shot_; }
+  // The shot as its model sees it: without the points and measurements on objects (they
+  // change no surface), so that measuring rebuilds no preview and keeps W's model.
+  metrology::Shot modelShot() const {
+    metrology::Shot s = shot_;
+    s.points.clear();
+    s.measurements.clear();
+    return s;
+  }
   const cv::Mat& photo() const { return photo_; }  // BGR, 8 bit
   const std::filesystem::path& path() const { return path_; }  // where save() writes
   // Unsaved changes: the shot differs from the file at path() (always, for a photo

@@ -224,9 +224,14 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
     case GLFW_KEY_B:
       if (!planMode_.empty()) shell.requestMode(planMode_);
       break;
+    case GLFW_KEY_M:
+      setMeasuring(shell, !measuring_);
+      break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);  // the corner goes back to where the drag began
       pickingReference_ = false;
+      measuring_ = false;
+      measureFrom_.reset();
       break;
     default:
       break;
@@ -247,6 +252,7 @@ void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
     return;
   }
   if (e.button != GLFW_MOUSE_BUTTON_LEFT) return;
+  if (measuring_ && measureClick(shell)) return;  // measuring: clicks place points, not grab corners
   const int corner = handleAt(canvas_, doc_->shot(), cursorPx_, kGrabRadiusPx);
   if (pickingReference_ && pickReference(shell, corner)) return;
   select(corner);
@@ -412,13 +418,13 @@ void EditMode::walk(app::Shell& shell) {
     return;
   }
   // The preview's full model when it is of the corners as they are: W then only uploads it.
-  std::shared_ptr<const engine::Scene> built = preview_.fullSceneOf(doc_->shot());
-  if (!built && !walk_.walks(doc_->shot())) {
+  std::shared_ptr<const engine::Scene> built = preview_.fullSceneOf(doc_->modelShot());
+  if (!built && !walk_.walks(doc_->modelShot())) {
     // Built on a thread of its own (seconds on a large photo): the window draws on, and
     // the panel says so; finishWalk starts the walk.
-    pendingWalk_ = PendingWalk{doc_->shot(), *live_.measurement,
+    pendingWalk_ = PendingWalk{doc_->modelShot(), *live_.measurement,
                                std::async(std::launch::async,
-                                          [shot = doc_->shot(), photo = doc_->photo(), m = *live_.measurement] {
+                                          [shot = doc_->modelShot(), photo = doc_->photo(), m = *live_.measurement] {
                                             return buildCorridorScene(shot, photo, m);
                                           }),
                                std::chrono::steady_clock::now()};
@@ -428,7 +434,7 @@ void EditMode::walk(app::Shell& shell) {
     if (shell.replaying()) finishWalk(shell, true);
     return;
   }
-  if (Status shown = walk_.show(shell, doc_->shot(), doc_->photo(), *live_.measurement, built); !shown) {
+  if (Status shown = walk_.show(shell, doc_->modelShot(), doc_->photo(), *live_.measurement, built); !shown) {
     shell.showMessage("walk: no model: " + shown.message());
     return;
   }
@@ -446,7 +452,7 @@ void EditMode::finishWalk(app::Shell& shell, bool wait) {
     shell.showMessage("walk: no model: " + scene.message());
     return;
   }
-  if (!doc_ || doc_->shot() != done.shot) {
+  if (!doc_ || doc_->modelShot() != done.shot) {
     shell.showMessage("walk: the corners changed while its model was built; press W to walk them");
     return;
   }
@@ -464,7 +470,7 @@ Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
   if (std::any_cast<PreviewWaitEvent>(&event.value)) {
     if (!doc_) return makeError("preview-wait: no file is open");
     remeasure();
-    if (Status built = preview_.waitForFull(shell, doc_->shot(), live_.measurement.has_value(), 120.0); !built) {
+    if (Status built = preview_.waitForFull(shell, doc_->modelShot(), live_.measurement.has_value(), 120.0); !built) {
       return makeError("preview-wait: " + built.message());
     }
     return {};
@@ -490,6 +496,7 @@ void EditMode::remeasure() {
     live_.measurement.reset();
     live_.error = "the box is a placeholder (no corridor was detected): drag its corners onto the corridor's corners first";
   }
+  remeasureObjects();
 }
 
 void EditMode::update(app::Shell& shell, double stepS) {
@@ -498,7 +505,7 @@ void EditMode::update(app::Shell& shell, double stepS) {
   if (snapWorker_) {
     for (SnapDone& done : snapWorker_->takeDone()) snapShown_ = std::move(done);
   }
-  if (doc_) preview_.update(shell, doc_->shot(), live_.measurement ? std::string() : live_.error.empty() ? std::string("the corners cannot be measured") : live_.error,
+  if (doc_) preview_.update(shell, doc_->modelShot(), live_.measurement ? std::string() : live_.error.empty() ? std::string("the corners cannot be measured") : live_.error,
                               drag_.has_value());
   updateFiles(shell, stepS);
   finishWalk(shell, shell.replaying());
@@ -567,7 +574,9 @@ void EditMode::traceRow(app::TraceRow& row) const {
     row.add("loupe", ordered_json(nullptr));
   }
   addCameraTrace(row);
-  row.add("preview", preview_.trace(doc_ ? &doc_->shot() : nullptr));
+  addObjectsTrace(row);
+  const std::optional<Shot> modelShot = doc_ ? std::optional<Shot>(doc_->modelShot()) : std::nullopt;
+  row.add("preview", preview_.trace(modelShot ? &*modelShot : nullptr));
   row.add("walk_model", walkModelFrom_.empty() ? ordered_json(nullptr) : ordered_json(walkModelFrom_));
   row.add("walk_building", pendingWalk_.has_value());
 }

@@ -28,6 +28,7 @@
 #include "editor/edit/latest_worker.h"
 #include "editor/edit/preview.h"
 #include "metrology/detect/snap.h"
+#include "metrology/object_measure.h"
 
 namespace pw::edit {
 
@@ -164,6 +165,19 @@ class EditMode : public app::AppMode {
   void addCameraTrace(app::TraceRow& row) const;      // the trace's "camera" and "handle_warnings"
   void rememberWidget(const char* name);              // the last item's rectangle, for the trace
   void drawCorners(app::Shell& shell);
+  // measure_tool.cpp: M, two clicks: a distance on the floor or (Shift) a height, kept in
+  // the shot (points, measurements), listed, deleted, drawn, traced ("objects").
+  void setMeasuring(app::Shell& shell, bool on);
+  bool measureClick(app::Shell& shell);  // a click while measuring (true: taken)
+  void deleteObjectMeasure(app::Shell& shell, size_t index);
+  metrology::Shot withObjectMeasure(const metrology::Shot& shot, glm::dvec2 from, glm::dvec2 to, bool height) const;
+  std::optional<glm::dvec2> measureTarget() const;
+  std::optional<std::pair<glm::dvec2, glm::dvec2>> verticalThrough(glm::dvec2 floorPx) const;
+  Result<metrology::PointMeasurement> measureObjects(const metrology::Shot& shot) const;
+  void remeasureObjects();
+  void drawMeasureOverlay(ImDrawList* list) const;
+  void drawMeasurements(app::Shell& shell);
+  void addObjectsTrace(app::TraceRow& row) const;
   void drawCanvasOverlay();
   void drawEmptyHint(app::Shell& shell);
 
@@ -220,6 +234,12 @@ class EditMode : public app::AppMode {
   // -1 while waiting for it (camera_panel.cpp).
   bool pickingReference_ = false;
   int referencePickFrom_ = -1;
+  // The measure tool: on (M), its first point once clicked (photo pixels), and the
+  // shot's measurements as last measured (remeasure) or why they do not measure.
+  bool measuring_ = false;
+  std::optional<glm::dvec2> measureFrom_;
+  std::optional<metrology::PointMeasurement> objects_;
+  std::string objectsError_;
   // The Camera panel's widgets as last drawn (window pixels), by name: the trace's
   // "camera"."widgets", so that replay scripts can click them.
   std::vector<std::pair<std::string, WindowRect>> widgetRects_;

@@ -157,6 +157,7 @@ void EditMode::drawPanel(app::Shell& shell) {
   for (const std::string& note : doc_->notes()) wrapped(kNoteColour, note);
   drawMeasurement();
   drawCamera(shell);
+  drawMeasurements(shell);
   drawCorners(shell);
   if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(kKeys);
   ImGui::End();
@@ -284,6 +285,7 @@ void EditMode::drawCanvasOverlay() {
       list->PushClipRect({float(piece.min.x), float(piece.min.y)}, {float(piece.max.x), float(piece.max.y)}, false);
       drawOverlay(list, input);
       drawCameraOverlay(list);
+      drawMeasureOverlay(list);
       list->PopClipRect();
     }
   }

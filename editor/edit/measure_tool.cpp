@@ -1,0 +1,270 @@
+// The editor's measure tool (issue 25, part 2): M, then two clicks on the photo measure
+// an object in it, in the corridor's frame (metrology/object_measure.h):
+//   - a distance on the floor between the two points clicked (a door's width at its
+//     sill, a table's length);
+//   - with Shift held at the second click, a height: the second point on the vertical
+//     through the first (drawn while measuring), how far it is above it (a person's head
+//     above their feet, a door's top above its sill).
+// While the second point is being placed the value and its ± follow the cursor. Each
+// measurement goes into the shot (its points "A1", "B1", ... and the measurement), one
+// undo step, listed in the panel's Measurements with a delete button, drawn on the photo
+// and written in the trace's "objects".
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "editor/app/shell.h"
+#include "editor/edit/edit_mode.h"
+#include "editor/edit/panel_style.h"
+#include "metrology/input_sigma.h"
+
+namespace pw::edit {
+namespace {
+
+using metrology::ImagePoint;
+using metrology::ObjectMeasure;
+using metrology::ObjectQuantity;
+using metrology::PointSurface;
+using metrology::Shot;
+using nlohmann::ordered_json;
+
+const ImU32 kMeasureColour = IM_COL32(255, 210, 60, 255);
+const ImU32 kShadow = IM_COL32(0, 0, 0, 210);
+constexpr double kPointSigmaPx = 1.0;  // a click's placement, as measure's --sigma-point-px default
+
+ImVec2 im(const glm::dvec2& p) { return {float(p.x), float(p.y)}; }
+
+// The first n with no point named A<n> or B<n>.
+int freeIndex(const Shot& shot) {
+  for (int n = 1;; ++n) {
+    const std::string a = "A" + std::to_string(n), b = "B" + std::to_string(n);
+    if (std::none_of(shot.points.begin(), shot.points.end(), [&](const ImagePoint& p) { return p.name == a || p.name == b; })) {
+      return n;
+    }
+  }
+}
+
+const ImagePoint* pointNamed(const Shot& shot, const std::string& name) {
+  for (const ImagePoint& p : shot.points)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+void labelAt(ImDrawList* list, glm::dvec2 at, const std::string& text) {
+  list->AddText(im(at + glm::dvec2(1, 1)), kShadow, text.c_str());
+  list->AddText(im(at), kMeasureColour, text.c_str());
+}
+
+}  // namespace
+
+// The shot with the measurement from `from` to `to` (image pixels) added: floor points,
+// or the second above the first for a height.
+Shot EditMode::withObjectMeasure(const Shot& shot, glm::dvec2 from, glm::dvec2 to, bool height) const {
+  Shot after = shot;
+  const int n = freeIndex(shot);
+  const std::string a = "A" + std::to_string(n), b = "B" + std::to_string(n);
+  after.points.push_back({a, from, {PointSurface::kFloor, ""}});
+  after.points.push_back({b, to, height ? metrology::PointOn{PointSurface::kAbove, a} : metrology::PointOn{PointSurface::kFloor, ""}});
+  after.measurements.push_back({height ? ObjectQuantity::kHeight : ObjectQuantity::kDistance, a, b});
+  return after;
+}
+
+// The second point as the cursor places it: for a height, the cursor's nearest point on
+// the vertical through the first (the measured camera's image of it).
+std::optional<glm::dvec2> EditMode::measureTarget() const {
+  if (!doc_ || !measureFrom_) return std::nullopt;
+  const glm::dvec2 cursor = canvas_.toPhoto(cursorPx_);
+  if (!shiftHeld()) return cursor;
+  const std::optional<std::pair<glm::dvec2, glm::dvec2>> up = verticalThrough(*measureFrom_);
+  if (!up) return std::nullopt;
+  const glm::dvec2 dir = glm::normalize(up->second - up->first);
+  return up->first + glm::dot(cursor - up->first, dir) * dir;
+}
+
+// The image of the vertical through the floor point at `floorPx`: that point and the
+// one a metre above it, or nullopt when the corners do not measure or it is off the floor.
+std::optional<std::pair<glm::dvec2, glm::dvec2>> EditMode::verticalThrough(glm::dvec2 floorPx) const {
+  if (!live_.measurement) return std::nullopt;
+  auto located = metrology::locatePoints(*live_.measurement, {{"foot", floorPx, {PointSurface::kFloor, ""}}});
+  if (!located || located->empty()) return std::nullopt;
+  const glm::dvec3 foot = located->front().m;
+  const glm::dvec3 a = metrology::projectWithMeasurement(*live_.measurement, foot);
+  const glm::dvec3 b = metrology::projectWithMeasurement(*live_.measurement, foot + glm::dvec3(0, 1, 0));
+  const glm::dvec2 pa(a.x, a.y), pb(b.x, b.y);
+  if (!(std::isfinite(pa.x) && std::isfinite(pa.y) && std::isfinite(pb.x) && std::isfinite(pb.y)) || glm::length(pb - pa) < 1e-6) {
+    return std::nullopt;
+  }
+  return std::pair{pa, pb};
+}
+
+// The measurements of `shot` (its points' and the ones asked), with their ±, or why not.
+Result<metrology::PointMeasurement> EditMode::measureObjects(const Shot& shot) const {
+  if (!live_.measurement) return makeError(live_.error.empty() ? "the corners cannot be measured" : live_.error);
+  const metrology::MeasureOptions options = metrology::withInputSigmas({}, shot, doc_->inputOrigins());
+  return metrology::measurePoints(shot, options, *live_.measurement, shot.points, shot.measurements, kPointSigmaPx);
+}
+
+void EditMode::remeasureObjects() {
+  objects_.reset();
+  objectsError_.clear();
+  if (!doc_ || doc_->shot().measurements.empty()) return;
+  auto measured = measureObjects(doc_->shot());
+  if (measured) objects_ = std::move(*measured);
+  else objectsError_ = measured.message();
+}
+
+void EditMode::setMeasuring(app::Shell& shell, bool on) {
+  measuring_ = on && doc_.has_value();
+  measureFrom_.reset();
+  if (measuring_) {
+    pickingReference_ = false;
+    shell.showMessage("measure: click a point on the floor, then the second (Shift: a height above the first); Esc: stop");
+  }
+}
+
+bool EditMode::measureClick(app::Shell& shell) {
+  if (!measuring_ || !doc_) return false;
+  const glm::dvec2 at = canvas_.toPhoto(cursorPx_);
+  if (!measureFrom_) {
+    if (!live_.measurement) {
+      shell.showMessage("measure: the corners do not measure yet: " + live_.error);
+      return true;
+    }
+    auto located = metrology::locatePoints(*live_.measurement, {{"a", at, {PointSurface::kFloor, ""}}});
+    if (!located) {
+      shell.showMessage("measure: the first point must be on the floor: " + located.message());
+      return true;
+    }
+    measureFrom_ = at;
+    return true;
+  }
+  const std::optional<glm::dvec2> to = measureTarget();
+  if (!to) return true;
+  const bool height = shiftHeld();
+  const Shot after = withObjectMeasure(doc_->shot(), *measureFrom_, *to, height);
+  auto measured = measureObjects(after);
+  if (!measured) {
+    shell.showMessage("measure: " + measured.message());
+    return true;
+  }
+  const ObjectMeasure& added = after.measurements.back();
+  applyEdit(shell, after, std::string("measure ") + metrology::quantityName(added.quantity) + " " + added.from + "-" + added.to);
+  measureFrom_.reset();
+  return true;
+}
+
+void EditMode::deleteObjectMeasure(app::Shell& shell, size_t index) {
+  if (!doc_ || index >= doc_->shot().measurements.size()) return;
+  Shot after = doc_->shot();
+  const ObjectMeasure gone = after.measurements[index];
+  after.measurements.erase(after.measurements.begin() + static_cast<long>(index));
+  // Its points go too, unless another measurement, or a point above one, still names them.
+  const auto used = [&](const std::string& name) {
+    for (const ObjectMeasure& m : after.measurements)
+      if (m.from == name || m.to == name) return true;
+    for (const ImagePoint& p : after.points)
+      if (p.on.surface == PointSurface::kAbove && p.on.above == name && p.name != gone.to && p.name != gone.from) return true;
+    return false;
+  };
+  for (const std::string& name : {gone.to, gone.from}) {
+    if (!used(name)) std::erase_if(after.points, [&](const ImagePoint& p) { return p.name == name; });
+  }
+  applyEdit(shell, after, std::string("delete ") + metrology::quantityName(gone.quantity) + " " + gone.from + "-" + gone.to);
+}
+
+void EditMode::drawMeasureOverlay(ImDrawList* list) const {
+  if (!doc_) return;
+  const Shot& shot = doc_->shot();
+  // The measurements kept: a line between their points, the value and ± at its middle.
+  for (size_t i = 0; i < shot.measurements.size(); ++i) {
+    const ObjectMeasure& m = shot.measurements[i];
+    const ImagePoint* a = pointNamed(shot, m.from);
+    const ImagePoint* b = pointNamed(shot, m.to);
+    if (!a || !b) continue;
+    const glm::dvec2 wa = canvas_.toWindow(a->px), wb = canvas_.toWindow(b->px);
+    list->AddLine(im(wa), im(wb), kShadow, 4.0f);
+    list->AddLine(im(wa), im(wb), kMeasureColour, 2.0f);
+    for (const glm::dvec2& p : {wa, wb}) list->AddCircleFilled(im(p), 3.5f, kMeasureColour);
+    std::string text = std::to_string(i + 1) + ": ";
+    if (objects_ && i < objects_->results.size()) {
+      text += metrology::dimensionText(objects_->results[i].valueM, objects_->results[i].sigmaM);
+    } else {
+      text += "?";
+    }
+    labelAt(list, 0.5 * (wa + wb) + glm::dvec2(8, -6), text);
+  }
+  if (!measuring_ || !measureFrom_) return;
+  // Being measured: for a height, the vertical through the first point; the line to
+  // where the second would go, with its value.
+  const glm::dvec2 wa = canvas_.toWindow(*measureFrom_);
+  list->AddCircleFilled(im(wa), 4.0f, kMeasureColour);
+  const bool height = shiftHeld();
+  if (height) {
+    if (const auto up = verticalThrough(*measureFrom_)) {
+      const glm::dvec2 p = canvas_.toWindow(up->first), q = canvas_.toWindow(up->second);
+      const glm::dvec2 dir = glm::normalize(q - p);
+      list->AddLine(im(p - 2000.0 * dir), im(p + 2000.0 * dir), (kMeasureColour & 0x00ffffff) | (110u << 24), 1.0f);
+    }
+  }
+  const std::optional<glm::dvec2> to = measureTarget();
+  if (!to) return;
+  const glm::dvec2 wb = canvas_.toWindow(*to);
+  list->AddLine(im(wa), im(wb), kShadow, 3.0f);
+  list->AddLine(im(wa), im(wb), kMeasureColour, 1.5f);
+  auto measured = measureObjects(withObjectMeasure(doc_->shot(), *measureFrom_, *to, height));
+  const std::string text = measured ? std::string(height ? "height " : "distance ") +
+                                          metrology::dimensionText(measured->results.back().valueM, measured->results.back().sigmaM)
+                                    : std::string("not on the floor");
+  labelAt(list, wb + glm::dvec2(12, 8), text);
+}
+
+void EditMode::drawMeasurements(app::Shell& shell) {
+  const Shot& shot = doc_->shot();
+  if (!ImGui::CollapsingHeader("Measurements (M)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (ImGui::SmallButton(measuring_ ? "measuring: click two points (Esc)" : "measure (M)")) setMeasuring(shell, !measuring_);
+  rememberWidget("measure");
+  if (shot.measurements.empty()) {
+    ImGui::TextDisabled("none: M, then two clicks on the floor (Shift at the second: a height)");
+    return;
+  }
+  if (!objectsError_.empty()) ui::wrapped(ui::kErrorColour, "cannot measure them: " + objectsError_);
+  for (size_t i = 0; i < shot.measurements.size(); ++i) {
+    const ObjectMeasure& m = shot.measurements[i];
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::SmallButton("x")) deleteObjectMeasure(shell, i);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("delete it (Ctrl+Z brings it back)");
+    ImGui::SameLine();
+    std::string line = std::to_string(i + 1) + ". " + metrology::quantityName(m.quantity) + " " + m.from + "-" + m.to + "  ";
+    if (objects_ && i < objects_->results.size()) {
+      const metrology::ObjectResult& r = objects_->results[i];
+      line += metrology::dimensionText(r.valueM, r.sigmaM);
+    }
+    ImGui::TextUnformatted(line.c_str());
+    ImGui::PopID();
+  }
+}
+
+void EditMode::addObjectsTrace(app::TraceRow& row) const {
+  ordered_json objects = ordered_json::array();
+  if (doc_) {
+    const Shot& shot = doc_->shot();
+    for (size_t i = 0; i < shot.measurements.size(); ++i) {
+      const ObjectMeasure& m = shot.measurements[i];
+      ordered_json o{{"quantity", metrology::quantityName(m.quantity)}, {"from", m.from}, {"to", m.to}};
+      const bool have = objects_ && i < objects_->results.size();
+      o["value_m"] = have ? ordered_json(objects_->results[i].valueM) : ordered_json(nullptr);
+      o["sigma_m"] = have ? ordered_json(objects_->results[i].sigmaM) : ordered_json(nullptr);
+      objects.push_back(o);
+    }
+  }
+  row.add("objects", objects);
+  row.add("measuring", ordered_json{{"active", measuring_},
+                                    {"from_px", measureFrom_ ? ordered_json::array({measureFrom_->x, measureFrom_->y})
+                                                             : ordered_json(nullptr)}});
+}
+
+}  // namespace pw::edit

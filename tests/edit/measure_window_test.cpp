@@ -1,0 +1,112 @@
+// The editor's measure tool (issue 25, part 2), end to end under an X server (xvfb-run) on
+// lavapipe: on corridor_b's exact corners, M and two clicks at P5 and P6 measure the floor
+// across the corridor (its true width), Shift at the second click from P5 towards P7 the
+// height above P5 (its true height); each with a ±; undo and redo take them away and
+// back; a saved copy carries them and `photowalk measure` reads the same values from it.
+// Validation on (PW_VALIDATION=1).
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/edit/edit_run.h"
+#include "tests/support/groundtruth.h"
+
+namespace pw::edit::test {
+namespace {
+namespace fs = std::filesystem;
+using pw::test::CommandRun;
+
+constexpr int kWidth = 1280, kHeight = 800;
+
+class Measure : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::path(PW_BINARY_DIR) / "test-output" / "edit_measure";
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_b");
+    fs::copy_file(truth.image, dir_ / "corridor_b.png");
+    fs::copy_file(truth.shot, dir_ / "corridor_b.json");
+  }
+  void SetUp() override {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (run under xvfb-run)";
+    setenv("PW_VALIDATION", "1", 1);
+  }
+  std::vector<Row> edit(const std::string& name, const std::string& script) {
+    const fs::path scriptPath = dir_ / (name + ".replay"), tracePath = dir_ / (name + ".jsonl");
+    std::ofstream(scriptPath) << script;
+    fs::remove(tracePath);
+    const CommandRun run = photowalk("edit " + (dir_ / "corridor_b.json").string() + " --size " + std::to_string(kWidth) +
+                                     "x" + std::to_string(kHeight) + " --no-vsync --replay " + scriptPath.string() +
+                                     " --trace " + tracePath.string());
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    return readTrace(tracePath);
+  }
+  static fs::path dir_;
+};
+fs::path Measure::dir_;
+
+TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
+  const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_b");
+  const auto first = edit("layout", "2 quit\n");
+  ASSERT_GE(first.size(), 2u);
+  const Row& r = first.back();
+  ASSERT_EQ(r.corners.size(), 8u);
+  const glm::dvec2 p5 = r.toWindow(r.corners[4]), p6 = r.toWindow(r.corners[5]), p7 = r.toWindow(r.corners[6]);
+
+  Script s;
+  s.key(3, "M");
+  s.click(5, p5).click(10, p6);  // a distance: across the floor at the near corners
+  s.click(16, p5);               // a height: Shift held at the second click, towards P7
+  s.at(19, "key LEFT_SHIFT down").move(20, p7 + glm::dvec2(25, 0)).at(21, "capture measuring.png");
+  s.at(22, "mouse left down").at(23, "mouse left up").at(25, "key LEFT_SHIFT up");
+  s.at(28, "capture measured.png");
+  s.ctrlKey(30, "Z");            // undo the height
+  s.ctrlKey(34, "Z", true);      // redo it
+  s.at(38, "save-copy measured.json").at(40, "quit");
+  const auto rows = edit("measure", s.str());
+  ASSERT_GE(rows.size(), 40u);
+
+  const auto objects = [&](size_t frame) { return rows.at(frame).raw.at("objects"); };
+  EXPECT_TRUE(rows.at(4).raw.at("measuring").at("active").get<bool>());
+  ASSERT_EQ(objects(14).size(), 1u) << objects(14).dump();
+  const nlohmann::json width = objects(14)[0];
+  EXPECT_EQ(width.at("quantity"), "distance");
+  EXPECT_NEAR(width.at("value_m").get<double>(), truth.widthM, 1e-6 * truth.widthM) << width.dump();
+  EXPECT_GT(width.at("sigma_m").get<double>(), 0.0);
+  ASSERT_EQ(objects(27).size(), 2u) << objects(27).dump();
+  const nlohmann::json height = objects(27)[1];
+  EXPECT_EQ(height.at("quantity"), "height");
+  // B2 is the cursor's nearest point on the vertical through A2 (25 px beside P7): P7's height.
+  EXPECT_NEAR(height.at("value_m").get<double>(), truth.heightM, 1e-6 * truth.heightM) << height.dump();
+  EXPECT_GT(height.at("sigma_m").get<double>(), 0.0);
+  // The corners did not move; undo takes the height away, redo brings it back.
+  EXPECT_EQ(rows.at(27).corners, r.corners);
+  EXPECT_EQ(objects(33).size(), 1u) << objects(33).dump();
+  EXPECT_EQ(objects(37).size(), 2u) << objects(37).dump();
+  EXPECT_TRUE(rows.at(37).dirty);
+
+  // The saved copy carries the points and measurements; measure reads the same values.
+  const fs::path saved = dir_ / "measured.json";
+  ASSERT_TRUE(fs::exists(saved));
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(saved));
+  ASSERT_EQ(doc.at("points").size(), 4u) << doc.dump();
+  EXPECT_EQ(doc.at("points")[3].at("on"), "above:A2");
+  ASSERT_EQ(doc.at("measurements").size(), 2u);
+  const CommandRun measured = photowalk("measure " + saved.string());
+  ASSERT_EQ(measured.exitCode, 0) << measured.output;
+  const nlohmann::json out = nlohmann::json::parse(measured.output);
+  ASSERT_EQ(out.at("objects").size(), 2u) << out.dump();
+  EXPECT_NEAR(out["objects"][0].at("value_m").get<double>(), width.at("value_m").get<double>(), 1e-9);
+  EXPECT_NEAR(out["objects"][1].at("value_m").get<double>(), height.at("value_m").get<double>(), 1e-9);
+}
+
+}  // namespace
+}  // namespace pw::edit::test
