@@ -1,10 +1,12 @@
 // The editor's measure tool (issue 25, part 2): M, then two clicks on the photo measure
-// an object in it, in the corridor's frame (metrology/object_measure.h):
-//   - a distance on the floor between the two points clicked (a door's width at its
-//     sill, a table's length);
-//   - with Shift held at the second click, a height: the second point on the vertical
-//     through the first (drawn while measuring), how far it is above it (a person's head
-//     above their feet, a door's top above its sill).
+// an object in it, in the corridor's frame (metrology/object_measure.h). Each point lies
+// on the surface of the box the photo shows where it is clicked (floor, ceiling, a side
+// wall, the far wall: surfaceAt), so that
+//   - two clicks give the distance between them (a door's width at its sill on the
+//     floor, a picture's width on its wall);
+//   - with Shift held at the second click, the second point is on the vertical through
+//     the first (drawn while measuring): its height above it (a person's head above
+//     their feet, a door's top above its sill, a window's top above its sill on a wall).
 // While the second point is being placed the value and its ± follow the cursor. Each
 // measurement goes into the shot (its points "A1", "B1", ... and the measurement), one
 // undo step, listed in the panel's Measurements with a delete button, drawn on the photo
@@ -12,6 +14,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -48,6 +51,35 @@ int freeIndex(const Shot& shot) {
   }
 }
 
+// The surface of the corridor's box the photo shows at `px`: the far wall inside its
+// four corners, else the floor, the ceiling or a side wall, each the quad between the far
+// wall and the near section carried on outwards from the vanishing point to the photo's
+// edges. Pixels of objects in front of the surfaces are taken as the surface behind.
+PointSurface surfaceAt(const Shot& shot, glm::dvec2 px) {
+  const auto& c = shot.cornersPx;
+  const auto inside = [&](std::array<glm::dvec2, 4> q) {
+    double sign = 0;
+    for (int i = 0; i < 4; ++i) {
+      const glm::dvec2 a = q[i], b = q[(i + 1) % 4];
+      const double cross = (b.x - a.x) * (px.y - a.y) - (b.y - a.y) * (px.x - a.x);
+      if (cross == 0) continue;
+      if (sign == 0) sign = cross;
+      else if ((cross > 0) != (sign > 0)) return false;
+    }
+    return true;
+  };
+  using metrology::P1, metrology::P2, metrology::P3, metrology::P4, metrology::P5, metrology::P6, metrology::P7,
+      metrology::P8;
+  if (inside({c[P1], c[P2], c[P4], c[P3]})) return PointSurface::kFarWall;
+  // The near corners carried far out along their boundaries (from the far corners).
+  const auto out = [&](int nearCorner, int farCorner) { return c[farCorner] + 1000.0 * (c[nearCorner] - c[farCorner]); };
+  if (inside({c[P3], c[P4], out(P6, P4), out(P5, P3)})) return PointSurface::kFloor;
+  if (inside({c[P1], c[P2], out(P8, P2), out(P7, P1)})) return PointSurface::kCeiling;
+  if (inside({c[P1], c[P3], out(P5, P3), out(P7, P1)})) return PointSurface::kLeftWall;
+  if (inside({c[P2], c[P4], out(P6, P4), out(P8, P2)})) return PointSurface::kRightWall;
+  return PointSurface::kFloor;
+}
+
 const ImagePoint* pointNamed(const Shot& shot, const std::string& name) {
   for (const ImagePoint& p : shot.points)
     if (p.name == name) return &p;
@@ -67,8 +99,8 @@ Shot EditMode::withObjectMeasure(const Shot& shot, glm::dvec2 from, glm::dvec2 t
   Shot after = shot;
   const int n = freeIndex(shot);
   const std::string a = "A" + std::to_string(n), b = "B" + std::to_string(n);
-  after.points.push_back({a, from, {PointSurface::kFloor, ""}});
-  after.points.push_back({b, to, height ? metrology::PointOn{PointSurface::kAbove, a} : metrology::PointOn{PointSurface::kFloor, ""}});
+  after.points.push_back({a, from, {surfaceAt(shot, from), ""}});
+  after.points.push_back({b, to, height ? metrology::PointOn{PointSurface::kAbove, a} : metrology::PointOn{surfaceAt(shot, to), ""}});
   after.measurements.push_back({height ? ObjectQuantity::kHeight : ObjectQuantity::kDistance, a, b});
   return after;
 }
@@ -85,11 +117,12 @@ std::optional<glm::dvec2> EditMode::measureTarget() const {
   return up->first + glm::dot(cursor - up->first, dir) * dir;
 }
 
-// The image of the vertical through the floor point at `floorPx`: that point and the
-// one a metre above it, or nullopt when the corners do not measure or it is off the floor.
-std::optional<std::pair<glm::dvec2, glm::dvec2>> EditMode::verticalThrough(glm::dvec2 floorPx) const {
+// The image of the vertical through the point at `px` (on the surface the photo shows
+// there): that point and the one a metre above it, or nullopt when the corners do not
+// measure or its ray misses the surface.
+std::optional<std::pair<glm::dvec2, glm::dvec2>> EditMode::verticalThrough(glm::dvec2 px) const {
   if (!live_.measurement) return std::nullopt;
-  auto located = metrology::locatePoints(*live_.measurement, {{"foot", floorPx, {PointSurface::kFloor, ""}}});
+  auto located = metrology::locatePoints(*live_.measurement, {{"foot", px, {surfaceAt(doc_->shot(), px), ""}}});
   if (!located || located->empty()) return std::nullopt;
   const glm::dvec3 foot = located->front().m;
   const glm::dvec3 a = metrology::projectWithMeasurement(*live_.measurement, foot);
@@ -122,7 +155,7 @@ void EditMode::setMeasuring(app::Shell& shell, bool on) {
   measureFrom_.reset();
   if (measuring_) {
     pickingReference_ = false;
-    shell.showMessage("measure: click a point on the floor, then the second (Shift: a height above the first); Esc: stop");
+    shell.showMessage("measure: click a point (on the floor, a wall or the ceiling), then the second (Shift: a height above the first); Esc: stop");
   }
 }
 
@@ -134,9 +167,9 @@ bool EditMode::measureClick(app::Shell& shell) {
       shell.showMessage("measure: the corners do not measure yet: " + live_.error);
       return true;
     }
-    auto located = metrology::locatePoints(*live_.measurement, {{"a", at, {PointSurface::kFloor, ""}}});
+    auto located = metrology::locatePoints(*live_.measurement, {{"a", at, {surfaceAt(doc_->shot(), at), ""}}});
     if (!located) {
-      shell.showMessage("measure: the first point must be on the floor: " + located.message());
+      shell.showMessage("measure: " + located.message());
       return true;
     }
     measureFrom_ = at;
@@ -218,7 +251,7 @@ void EditMode::drawMeasureOverlay(ImDrawList* list) const {
   auto measured = measureObjects(withObjectMeasure(doc_->shot(), *measureFrom_, *to, height));
   const std::string text = measured ? std::string(height ? "height " : "distance ") +
                                           metrology::dimensionText(measured->results.back().valueM, measured->results.back().sigmaM)
-                                    : std::string("not on the floor");
+                                    : std::string("not on a surface");
   labelAt(list, wb + glm::dvec2(12, 8), text);
 }
 
@@ -228,7 +261,7 @@ void EditMode::drawMeasurements(app::Shell& shell) {
   if (ImGui::SmallButton(measuring_ ? "measuring: click two points (Esc)" : "measure (M)")) setMeasuring(shell, !measuring_);
   rememberWidget("measure");
   if (shot.measurements.empty()) {
-    ImGui::TextDisabled("none: M, then two clicks on the floor (Shift at the second: a height)");
+    ImGui::TextDisabled("none: M, then two clicks (Shift at the second: a height above the first)");
     return;
   }
   if (!objectsError_.empty()) ui::wrapped(ui::kErrorColour, "cannot measure them: " + objectsError_);

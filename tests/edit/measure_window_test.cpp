@@ -60,6 +60,7 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   const Row& r = first.back();
   ASSERT_EQ(r.corners.size(), 8u);
   const glm::dvec2 p5 = r.toWindow(r.corners[4]), p6 = r.toWindow(r.corners[5]), p7 = r.toWindow(r.corners[6]);
+  const glm::dvec2 p1 = r.toWindow(r.corners[0]), p2 = r.toWindow(r.corners[1]);
 
   Script s;
   s.key(3, "M");
@@ -70,9 +71,10 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   s.at(28, "capture measured.png");
   s.ctrlKey(30, "Z");            // undo the height
   s.ctrlKey(34, "Z", true);      // redo it
-  s.at(38, "save-copy measured.json").at(40, "quit");
+  s.click(38, p1).click(42, p2);  // on the far wall: its top edge, the corridor's width again
+  s.at(48, "save-copy measured.json").at(50, "quit");
   const auto rows = edit("measure", s.str());
-  ASSERT_GE(rows.size(), 40u);
+  ASSERT_GE(rows.size(), 50u);
 
   const auto objects = [&](size_t frame) { return rows.at(frame).raw.at("objects"); };
   EXPECT_TRUE(rows.at(4).raw.at("measuring").at("active").get<bool>());
@@ -92,18 +94,22 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   EXPECT_EQ(objects(33).size(), 1u) << objects(33).dump();
   EXPECT_EQ(objects(37).size(), 2u) << objects(37).dump();
   EXPECT_TRUE(rows.at(37).dirty);
+  ASSERT_EQ(objects(47).size(), 3u) << objects(47).dump();
+  EXPECT_NEAR(objects(47)[2].at("value_m").get<double>(), truth.widthM, 1e-6 * truth.widthM) << objects(47).dump();
 
   // The saved copy carries the points and measurements; measure reads the same values.
   const fs::path saved = dir_ / "measured.json";
   ASSERT_TRUE(fs::exists(saved));
   const nlohmann::json doc = nlohmann::json::parse(std::ifstream(saved));
-  ASSERT_EQ(doc.at("points").size(), 4u) << doc.dump();
+  ASSERT_EQ(doc.at("points").size(), 6u) << doc.dump();
+  EXPECT_EQ(doc.at("points")[0].at("on"), "floor");
   EXPECT_EQ(doc.at("points")[3].at("on"), "above:A2");
-  ASSERT_EQ(doc.at("measurements").size(), 2u);
+  EXPECT_EQ(doc.at("points")[4].at("on"), "wall:far");
+  ASSERT_EQ(doc.at("measurements").size(), 3u);
   const CommandRun measured = photowalk("measure " + saved.string());
   ASSERT_EQ(measured.exitCode, 0) << measured.output;
   const nlohmann::json out = nlohmann::json::parse(measured.output);
-  ASSERT_EQ(out.at("objects").size(), 2u) << out.dump();
+  ASSERT_EQ(out.at("objects").size(), 3u) << out.dump();
   EXPECT_NEAR(out["objects"][0].at("value_m").get<double>(), width.at("value_m").get<double>(), 1e-9);
   EXPECT_NEAR(out["objects"][1].at("value_m").get<double>(), height.at("value_m").get<double>(), 1e-9);
 }
