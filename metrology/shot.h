@@ -88,6 +88,7 @@ const char* quantityName(ObjectQuantity quantity);
 struct ObjectMeasure {
   ObjectQuantity quantity = ObjectQuantity::kDistance;
   std::string from, to;
+  std::string name;  // what a person calls it ("door width"); may be empty
   bool operator==(const ObjectMeasure&) const = default;
 };
 

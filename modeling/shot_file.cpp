@@ -159,7 +159,7 @@ Status readShotObjects(const json& fields, const std::string& where, std::vector
   }
   if (fields.contains("measurements")) {
     const json& list = fields["measurements"];
-    const std::string form = "measurements is [{\"distance\": [A, B]} or {\"height\": [A, B]}, ...]";
+    const std::string form = "measurements is [{\"distance\": [A, B]} or {\"height\": [A, B]}, with \"name\": TEXT if wished, ...]";
     if (!list.is_array()) return makeError(where + ": " + form);
     for (size_t i = 0; i < list.size(); ++i) {
       const json& m = list[i];
@@ -169,7 +169,11 @@ Status readShotObjects(const json& fields, const std::string& where, std::vector
         if (!m.is_object() || !m.contains(key)) continue;
         const json& ends = m[key];
         if (!ends.is_array() || ends.size() != 2 || !ends[0].is_string() || !ends[1].is_string()) break;
-        objects.push_back({quantity, ends[0].get<std::string>(), ends[1].get<std::string>()});
+        objects.push_back({quantity, ends[0].get<std::string>(), ends[1].get<std::string>(), ""});
+        if (m.contains("name")) {
+          if (!m["name"].is_string()) break;
+          objects.back().name = m["name"].get<std::string>();
+        }
         read = true;
       }
       if (!read) return makeError(where + ": measurements[" + std::to_string(i) + "]: " + form);
@@ -416,7 +420,9 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
   if (!shot.measurements.empty()) {
     json measurements = json::array();
     for (const metrology::ObjectMeasure& m : shot.measurements) {
-      measurements.push_back({{metrology::quantityName(m.quantity), {m.from, m.to}}});
+      json entry = {{metrology::quantityName(m.quantity), {m.from, m.to}}};
+      if (!m.name.empty()) entry["name"] = m.name;
+      measurements.push_back(entry);
     }
     doc["measurements"] = measurements;
   }

@@ -98,7 +98,7 @@ Result<metrology::ObjectMeasure> parseObjectMeasure(const std::string& text, met
   if (comma == std::string::npos || comma == 0 || comma + 1 == text.size()) {
     return makeError(option + " takes two point names, A,B, not '" + text + "'");
   }
-  return metrology::ObjectMeasure{quantity, text.substr(0, comma), text.substr(comma + 1)};
+  return metrology::ObjectMeasure{quantity, text.substr(0, comma), text.substr(comma + 1), ""};
 }
 
 // The points and objects as measure's JSON has them.
@@ -129,6 +129,7 @@ void addObjects(nlohmann::ordered_json& doc, const std::vector<metrology::ImageP
     std::string text = metrology::dimensionText(r.valueM, r.sigmaM);
     if (top) text += " (mostly: " + top->first + ")";
     objects.push_back(ordered_json{{"quantity", metrology::quantityName(r.asked.quantity)},
+                                   {"name", r.asked.name},
                                    {"from", r.asked.from},
                                    {"to", r.asked.to},
                                    {"value_m", r.valueM},

@@ -240,6 +240,8 @@ class EditMode : public app::AppMode {
   std::optional<glm::dvec2> measureFrom_;
   std::optional<metrology::PointMeasurement> objects_;
   std::string objectsError_;
+  std::vector<std::array<char, 64>> nameBuffers_;  // the Measurements list's name fields
+  int renaming_ = -1;                               // the one being typed into, or -1
   // The Camera panel's widgets as last drawn (window pixels), by name: the trace's
   // "camera"."widgets", so that replay scripts can click them.
   std::vector<std::pair<std::string, WindowRect>> widgetRects_;

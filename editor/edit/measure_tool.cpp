@@ -101,7 +101,7 @@ Shot EditMode::withObjectMeasure(const Shot& shot, glm::dvec2 from, glm::dvec2 t
   const std::string a = "A" + std::to_string(n), b = "B" + std::to_string(n);
   after.points.push_back({a, from, {surfaceAt(shot, from), ""}});
   after.points.push_back({b, to, height ? metrology::PointOn{PointSurface::kAbove, a} : metrology::PointOn{surfaceAt(shot, to), ""}});
-  after.measurements.push_back({height ? ObjectQuantity::kHeight : ObjectQuantity::kDistance, a, b});
+  after.measurements.push_back({height ? ObjectQuantity::kHeight : ObjectQuantity::kDistance, a, b, ""});
   return after;
 }
 
@@ -222,7 +222,7 @@ void EditMode::drawMeasureOverlay(ImDrawList* list) const {
     list->AddLine(im(wa), im(wb), kShadow, 4.0f);
     list->AddLine(im(wa), im(wb), kMeasureColour, 2.0f);
     for (const glm::dvec2& p : {wa, wb}) list->AddCircleFilled(im(p), 3.5f, kMeasureColour);
-    std::string text = std::to_string(i + 1) + ": ";
+    std::string text = (m.name.empty() ? std::to_string(i + 1) : m.name) + ": ";
     if (objects_ && i < objects_->results.size()) {
       text += metrology::dimensionText(objects_->results[i].valueM, objects_->results[i].sigmaM);
     } else {
@@ -265,13 +265,32 @@ void EditMode::drawMeasurements(app::Shell& shell) {
     return;
   }
   if (!objectsError_.empty()) ui::wrapped(ui::kErrorColour, "cannot measure them: " + objectsError_);
+  nameBuffers_.resize(shot.measurements.size());
   for (size_t i = 0; i < shot.measurements.size(); ++i) {
     const ObjectMeasure& m = shot.measurements[i];
     ImGui::PushID(static_cast<int>(i));
     if (ImGui::SmallButton("x")) deleteObjectMeasure(shell, i);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("delete it (Ctrl+Z brings it back)");
     ImGui::SameLine();
-    std::string line = std::to_string(i + 1) + ". " + metrology::quantityName(m.quantity) + " " + m.from + "-" + m.to + "  ";
+    // Its name, typed in place: kept on Enter or when the field is left (one undo step);
+    // the field shows the shot's name whenever it is not being typed into.
+    std::array<char, 64>& buffer = nameBuffers_[i];
+    if (renaming_ != static_cast<int>(i)) std::snprintf(buffer.data(), buffer.size(), "%s", m.name.c_str());
+    ImGui::SetNextItemWidth(110.0f);
+    ImGui::InputTextWithHint("##name", "name", buffer.data(), buffer.size());
+    rememberWidget(("name " + std::to_string(i + 1)).c_str());
+    if (ImGui::IsItemActivated()) renaming_ = static_cast<int>(i);
+    if (ImGui::IsItemDeactivated()) {
+      renaming_ = -1;
+      const std::string typed = buffer.data();
+      if (ImGui::IsItemDeactivatedAfterEdit() && typed != m.name) {
+        Shot after = shot;
+        after.measurements[i].name = typed;
+        applyEdit(shell, after, "name measurement " + std::to_string(i + 1));
+      }
+    }
+    ImGui::SameLine();
+    std::string line = std::string(metrology::quantityName(m.quantity)) + " " + m.from + "-" + m.to + "  ";
     if (objects_ && i < objects_->results.size()) {
       const metrology::ObjectResult& r = objects_->results[i];
       line += metrology::dimensionText(r.valueM, r.sigmaM);
@@ -287,7 +306,7 @@ void EditMode::addObjectsTrace(app::TraceRow& row) const {
     const Shot& shot = doc_->shot();
     for (size_t i = 0; i < shot.measurements.size(); ++i) {
       const ObjectMeasure& m = shot.measurements[i];
-      ordered_json o{{"quantity", metrology::quantityName(m.quantity)}, {"from", m.from}, {"to", m.to}};
+      ordered_json o{{"quantity", metrology::quantityName(m.quantity)}, {"name", m.name}, {"from", m.from}, {"to", m.to}};
       const bool have = objects_ && i < objects_->results.size();
       o["value_m"] = have ? ordered_json(objects_->results[i].valueM) : ordered_json(nullptr);
       o["sigma_m"] = have ? ordered_json(objects_->results[i].sigmaM) : ordered_json(nullptr);

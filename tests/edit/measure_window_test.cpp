@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using pw::test::CommandRun;
 
-constexpr int kWidth = 1280, kHeight = 800;
+constexpr int kWidth = 1280, kHeight = 1000;  // the 3D preview hidden (P): the whole panel in view
 
 class Measure : public ::testing::Test {
  protected:
@@ -39,11 +39,11 @@ class Measure : public ::testing::Test {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (run under xvfb-run)";
     setenv("PW_VALIDATION", "1", 1);
   }
-  std::vector<Row> edit(const std::string& name, const std::string& script) {
+  std::vector<Row> edit(const std::string& name, const std::string& script, const std::string& file = "corridor_b.json") {
     const fs::path scriptPath = dir_ / (name + ".replay"), tracePath = dir_ / (name + ".jsonl");
-    std::ofstream(scriptPath) << script;
+    std::ofstream(scriptPath) << "0 key P down\n0 key P up\n" << script;
     fs::remove(tracePath);
-    const CommandRun run = photowalk("edit " + (dir_ / "corridor_b.json").string() + " --size " + std::to_string(kWidth) +
+    const CommandRun run = photowalk("edit " + (dir_ / file).string() + " --size " + std::to_string(kWidth) +
                                      "x" + std::to_string(kHeight) + " --no-vsync --replay " + scriptPath.string() +
                                      " --trace " + tracePath.string());
     EXPECT_EQ(run.exitCode, 0) << run.output;
@@ -112,6 +112,22 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   ASSERT_EQ(out.at("objects").size(), 3u) << out.dump();
   EXPECT_NEAR(out["objects"][0].at("value_m").get<double>(), width.at("value_m").get<double>(), 1e-9);
   EXPECT_NEAR(out["objects"][1].at("value_m").get<double>(), height.at("value_m").get<double>(), 1e-9);
+
+  // Named in the list: typed into its field, kept on Enter (one undo step), saved, and
+  // measure's JSON says it.
+  const auto& widgets = rows.at(47).raw.at("camera").at("widgets");
+  ASSERT_TRUE(widgets.contains("name 1")) << widgets.dump();
+  Script n;
+  n.click(3, widgets["name 1"]).at(6, "type door_width").key(8, "ENTER");
+  n.at(12, "save-copy named.json");
+  n.ctrlKey(14, "Z").at(18, "quit");
+  const auto named = edit("name", n.str(), "measured.json");
+  ASSERT_GE(named.size(), 18u);
+  EXPECT_EQ(named.at(11).raw.at("objects")[0].at("name"), "door_width") << named.at(11).raw.at("objects").dump();
+  EXPECT_EQ(named.at(17).raw.at("objects")[0].at("name"), "") << "undone";
+  const CommandRun readBack = photowalk("measure " + (dir_ / "named.json").string());
+  ASSERT_EQ(readBack.exitCode, 0) << readBack.output;
+  EXPECT_EQ(nlohmann::json::parse(readBack.output).at("objects")[0].at("name"), "door_width");
 }
 
 }  // namespace
