@@ -172,6 +172,7 @@ class EditMode : public app::AppMode {
   void deleteObjectMeasure(app::Shell& shell, size_t index);
   metrology::Shot withObjectMeasure(const metrology::Shot& shot, glm::dvec2 from, glm::dvec2 to, bool height) const;
   std::optional<glm::dvec2> measureTarget() const;
+  glm::dvec2 measureSnap(glm::dvec2 px) const;
   std::optional<std::pair<glm::dvec2, glm::dvec2>> verticalThrough(glm::dvec2 floorPx) const;
   Result<metrology::PointMeasurement> measureObjects(const metrology::Shot& shot) const;
   void remeasureObjects();

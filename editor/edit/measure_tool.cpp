@@ -13,6 +13,8 @@
 // and written in the trace's "objects".
 #include <imgui.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -86,6 +88,47 @@ const ImagePoint* pointNamed(const Shot& shot, const std::string& name) {
   return nullptr;
 }
 
+// A click snaps within this many screen pixels (as a dragged corner does): to the
+// strongest corner there (two edges meeting: a door's or a picture's corner, a foot on
+// the floor's line), placed to a tenth of a pixel; else to the nearest edge.
+constexpr double kMeasureSnapScreenPx = 8;
+
+std::optional<glm::dvec2> snapToPhoto(const cv::Mat& photo, glm::dvec2 px, double reachPx) {
+  if (photo.empty()) return std::nullopt;
+  const int r = static_cast<int>(std::ceil(reachPx)) + 4;
+  const cv::Rect roi = cv::Rect(static_cast<int>(std::floor(px.x)) - r, static_cast<int>(std::floor(px.y)) - r, 2 * r + 1, 2 * r + 1) &
+                       cv::Rect(0, 0, photo.cols, photo.rows);
+  if (roi.width < 8 || roi.height < 8) return std::nullopt;
+  cv::Mat grey;
+  cv::cvtColor(photo(roi), grey, cv::COLOR_BGR2GRAY);
+  const glm::dvec2 origin(roi.x, roi.y);
+  std::vector<cv::Point2f> corners;
+  cv::goodFeaturesToTrack(grey, corners, 8, 0.05, 2.0);
+  std::optional<glm::dvec2> best;
+  double bestDistance = reachPx;
+  for (const cv::Point2f& c : corners) {
+    const glm::dvec2 at = origin + glm::dvec2(c.x, c.y);
+    if (glm::length(at - px) <= bestDistance) best = at, bestDistance = glm::length(at - px);
+  }
+  if (best) {
+    std::vector<cv::Point2f> refined{cv::Point2f(float(best->x - origin.x), float(best->y - origin.y))};
+    cv::cornerSubPix(grey, refined, cv::Size(3, 3), cv::Size(-1, -1),
+                     cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 20, 0.01));
+    const glm::dvec2 at = origin + glm::dvec2(refined[0].x, refined[0].y);
+    return glm::length(at - *best) <= 2.0 ? at : *best;
+  }
+  cv::Mat edges;
+  cv::Canny(grey, edges, 40, 120);
+  for (int y = 0; y < edges.rows; ++y) {
+    for (int x = 0; x < edges.cols; ++x) {
+      if (!edges.at<uchar>(y, x)) continue;
+      const glm::dvec2 at = origin + glm::dvec2(x, y);
+      if (glm::length(at - px) <= bestDistance) best = at, bestDistance = glm::length(at - px);
+    }
+  }
+  return best;
+}
+
 void labelAt(ImDrawList* list, glm::dvec2 at, const std::string& text) {
   list->AddText(im(at + glm::dvec2(1, 1)), kShadow, text.c_str());
   list->AddText(im(at), kMeasureColour, text.c_str());
@@ -109,7 +152,7 @@ Shot EditMode::withObjectMeasure(const Shot& shot, glm::dvec2 from, glm::dvec2 t
 // the vertical through the first (the measured camera's image of it).
 std::optional<glm::dvec2> EditMode::measureTarget() const {
   if (!doc_ || !measureFrom_) return std::nullopt;
-  const glm::dvec2 cursor = canvas_.toPhoto(cursorPx_);
+  const glm::dvec2 cursor = measureSnap(canvas_.toPhoto(cursorPx_));
   if (!shiftHeld()) return cursor;
   const std::optional<std::pair<glm::dvec2, glm::dvec2>> up = verticalThrough(*measureFrom_);
   if (!up) return std::nullopt;
@@ -159,9 +202,17 @@ void EditMode::setMeasuring(app::Shell& shell, bool on) {
   }
 }
 
+// Where a point at `px` (photo pixels) goes: snapped to the photo's corner or edge within
+// reach, unless Alt is held.
+glm::dvec2 EditMode::measureSnap(glm::dvec2 px) const {
+  if (!doc_ || altHeld()) return px;
+  const double reach = std::clamp(kMeasureSnapScreenPx / canvas_.scale(), 1.0, 25.0);
+  return snapToPhoto(doc_->photo(), px, reach).value_or(px);
+}
+
 bool EditMode::measureClick(app::Shell& shell) {
   if (!measuring_ || !doc_) return false;
-  const glm::dvec2 at = canvas_.toPhoto(cursorPx_);
+  const glm::dvec2 at = measureSnap(canvas_.toPhoto(cursorPx_));
   if (!measureFrom_) {
     if (!live_.measurement) {
       shell.showMessage("measure: the corners do not measure yet: " + live_.error);

@@ -2,9 +2,11 @@
 // lavapipe: on corridor_b's exact corners, M and two clicks at P5 and P6 measure the floor
 // across the corridor (its true width), Shift at the second click from P5 towards P7 the
 // height above P5 (its true height); each with a ±; undo and redo take them away and
-// back; a saved copy carries them and `photowalk measure` reads the same values from it.
+// back; a saved copy carries them and `photowalk measure` reads the same values from it;
+// a name typed into the list is kept and undone; a click beside a corner snaps onto it.
 // Validation on (PW_VALIDATION=1).
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -63,7 +65,7 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   const glm::dvec2 p1 = r.toWindow(r.corners[0]), p2 = r.toWindow(r.corners[1]);
 
   Script s;
-  s.key(3, "M");
+  s.key(3, "M").at(4, "key LEFT_ALT down");  // Alt: the points exactly where clicked, not snapped
   s.click(5, p5).click(10, p6);  // a distance: across the floor at the near corners
   s.click(16, p5);               // a height: Shift held at the second click, towards P7
   s.at(19, "key LEFT_SHIFT down").move(20, p7 + glm::dvec2(25, 0)).at(21, "capture measuring.png");
@@ -72,7 +74,7 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   s.ctrlKey(30, "Z");            // undo the height
   s.ctrlKey(34, "Z", true);      // redo it
   s.click(38, p1).click(42, p2);  // on the far wall: its top edge, the corridor's width again
-  s.at(48, "save-copy measured.json").at(50, "quit");
+  s.at(46, "key LEFT_ALT up").at(48, "save-copy measured.json").at(50, "quit");
   const auto rows = edit("measure", s.str());
   ASSERT_GE(rows.size(), 50u);
 
@@ -120,9 +122,19 @@ TEST_F(Measure, AFloorDistanceAndAHeightWithTheirPlusMinusKeptUndoneAndSaved) {
   Script n;
   n.click(3, widgets["name 1"]).at(6, "type door_width").key(8, "ENTER");
   n.at(12, "save-copy named.json");
-  n.ctrlKey(14, "Z").at(18, "quit");
+  n.ctrlKey(14, "Z");
+  // Without Alt a click snaps: 5 px beside the far wall's corner P3 (on the screen), the
+  // point goes onto the corner.
+  const glm::dvec2 p3 = r.toWindow(r.corners[2]);
+  n.key(20, "M").click(22, p3 + glm::dvec2(4, -3)).at(28, "quit");
   const auto named = edit("name", n.str(), "measured.json");
-  ASSERT_GE(named.size(), 18u);
+  ASSERT_GE(named.size(), 28u);
+  const auto& from = named.at(27).raw.at("measuring").at("from_px");
+  ASSERT_TRUE(from.is_array()) << named.at(27).raw.at("measuring").dump();
+  const glm::dvec2 snapped(from[0].get<double>(), from[1].get<double>());
+  std::printf("a click 5 screen px (%.1f photo px) from P3 snapped %.2f px from it\n", 5.0 / r.scale,
+              glm::length(snapped - r.corners[2]));
+  EXPECT_LT(glm::length(snapped - r.corners[2]), 0.75);
   EXPECT_EQ(named.at(11).raw.at("objects")[0].at("name"), "door_width") << named.at(11).raw.at("objects").dump();
   EXPECT_EQ(named.at(17).raw.at("objects")[0].at("name"), "") << "undone";
   const CommandRun readBack = photowalk("measure " + (dir_ / "named.json").string());
