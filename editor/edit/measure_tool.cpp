@@ -129,8 +129,10 @@ std::optional<glm::dvec2> snapToPhoto(const cv::Mat& photo, glm::dvec2 px, doubl
   return best;
 }
 
+// On a dark plate, so that it reads over the photo and over the box's own lines.
 void labelAt(ImDrawList* list, glm::dvec2 at, const std::string& text) {
-  list->AddText(im(at + glm::dvec2(1, 1)), kShadow, text.c_str());
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  list->AddRectFilled(im(at - glm::dvec2(3, 1)), im(at + glm::dvec2(size.x + 3, size.y + 1)), IM_COL32(0, 0, 0, 170), 3.0f);
   list->AddText(im(at), kMeasureColour, text.c_str());
 }
 
@@ -279,7 +281,7 @@ void EditMode::drawMeasureOverlay(ImDrawList* list) const {
     } else {
       text += "?";
     }
-    labelAt(list, 0.5 * (wa + wb) + glm::dvec2(8, -6), text);
+    labelAt(list, 0.5 * (wa + wb) + glm::dvec2(8, 6), text);
   }
   if (!measuring_ || !measureFrom_) return;
   // Being measured: for a height, the vertical through the first point; the line to
