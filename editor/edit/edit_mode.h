@@ -171,12 +171,17 @@ class EditMode : public app::AppMode {
   bool measureClick(app::Shell& shell);  // a click while measuring (true: taken)
   void deleteObjectMeasure(app::Shell& shell, size_t index);
   metrology::Shot withObjectMeasure(const metrology::Shot& shot, glm::dvec2 from, glm::dvec2 to, bool height) const;
-  std::optional<glm::dvec2> measureTarget() const;
   glm::dvec2 measureSnap(glm::dvec2 px) const;
   std::optional<std::pair<glm::dvec2, glm::dvec2>> verticalThrough(glm::dvec2 floorPx) const;
   Result<metrology::PointMeasurement> measureObjects(const metrology::Shot& shot) const;
   void remeasureObjects();
-  void drawMeasureOverlay(ImDrawList* list) const;
+  struct MeasuringNow {
+    std::optional<std::pair<glm::dvec2, glm::dvec2>> vertical;  // for a height
+    std::optional<glm::dvec2> target;                           // the second point
+    std::string text;                                            // its value, or why none
+  };
+  MeasuringNow measuringNow() const;
+  void drawMeasureOverlay(ImDrawList* list, const MeasuringNow& now) const;
   void drawMeasurements(app::Shell& shell);
   void addObjectsTrace(app::TraceRow& row) const;
   void drawCanvasOverlay();

@@ -150,18 +150,6 @@ Shot EditMode::withObjectMeasure(const Shot& shot, glm::dvec2 from, glm::dvec2 t
   return after;
 }
 
-// The second point as the cursor places it: for a height, the cursor's nearest point on
-// the vertical through the first (the measured camera's image of it).
-std::optional<glm::dvec2> EditMode::measureTarget() const {
-  if (!doc_ || !measureFrom_) return std::nullopt;
-  const glm::dvec2 cursor = measureSnap(canvas_.toPhoto(cursorPx_));
-  if (!shiftHeld()) return cursor;
-  const std::optional<std::pair<glm::dvec2, glm::dvec2>> up = verticalThrough(*measureFrom_);
-  if (!up) return std::nullopt;
-  const glm::dvec2 dir = glm::normalize(up->second - up->first);
-  return up->first + glm::dot(cursor - up->first, dir) * dir;
-}
-
 // The image of the vertical through the point at `px` (on the surface the photo shows
 // there): that point and the one a metre above it, or nullopt when the corners do not
 // measure or its ray misses the surface.
@@ -228,7 +216,7 @@ bool EditMode::measureClick(app::Shell& shell) {
     measureFrom_ = at;
     return true;
   }
-  const std::optional<glm::dvec2> to = measureTarget();
+  const std::optional<glm::dvec2> to = measuringNow().target;
   if (!to) return true;
   const bool height = shiftHeld();
   const Shot after = withObjectMeasure(doc_->shot(), *measureFrom_, *to, height);
@@ -248,21 +236,21 @@ void EditMode::deleteObjectMeasure(app::Shell& shell, size_t index) {
   Shot after = doc_->shot();
   const ObjectMeasure gone = after.measurements[index];
   after.measurements.erase(after.measurements.begin() + static_cast<long>(index));
-  // Its points go too, unless another measurement, or a point above one, still names them.
-  const auto used = [&](const std::string& name) {
-    for (const ObjectMeasure& m : after.measurements)
-      if (m.from == name || m.to == name) return true;
-    for (const ImagePoint& p : after.points)
-      if (p.on.surface == PointSurface::kAbove && p.on.above == name && p.name != gone.to && p.name != gone.from) return true;
-    return false;
-  };
+  // Its points go too (the second first: it may stand above the first), unless another
+  // measurement or a point left standing above one still names them.
   for (const std::string& name : {gone.to, gone.from}) {
-    if (!used(name)) std::erase_if(after.points, [&](const ImagePoint& p) { return p.name == name; });
+    const bool named =
+        std::any_of(after.measurements.begin(), after.measurements.end(),
+                    [&](const ObjectMeasure& m) { return m.from == name || m.to == name; }) ||
+        std::any_of(after.points.begin(), after.points.end(), [&](const ImagePoint& p) {
+          return p.on.surface == PointSurface::kAbove && p.on.above == name;
+        });
+    if (!named) std::erase_if(after.points, [&](const ImagePoint& p) { return p.name == name; });
   }
   applyEdit(shell, after, std::string("delete ") + metrology::quantityName(gone.quantity) + " " + gone.from + "-" + gone.to);
 }
 
-void EditMode::drawMeasureOverlay(ImDrawList* list) const {
+void EditMode::drawMeasureOverlay(ImDrawList* list, const MeasuringNow& now) const {
   if (!doc_) return;
   const Shot& shot = doc_->shot();
   // The measurements kept: a line between their points, the value and ± at its middle.
@@ -288,24 +276,39 @@ void EditMode::drawMeasureOverlay(ImDrawList* list) const {
   // where the second would go, with its value.
   const glm::dvec2 wa = canvas_.toWindow(*measureFrom_);
   list->AddCircleFilled(im(wa), 4.0f, kMeasureColour);
-  const bool height = shiftHeld();
-  if (height) {
-    if (const auto up = verticalThrough(*measureFrom_)) {
-      const glm::dvec2 p = canvas_.toWindow(up->first), q = canvas_.toWindow(up->second);
-      const glm::dvec2 dir = glm::normalize(q - p);
-      list->AddLine(im(p - 2000.0 * dir), im(p + 2000.0 * dir), (kMeasureColour & 0x00ffffff) | (110u << 24), 1.0f);
-    }
+  if (now.vertical) {
+    const glm::dvec2 p = canvas_.toWindow(now.vertical->first), q = canvas_.toWindow(now.vertical->second);
+    const glm::dvec2 dir = glm::normalize(q - p);
+    list->AddLine(im(p - 2000.0 * dir), im(p + 2000.0 * dir), (kMeasureColour & 0x00ffffff) | (110u << 24), 1.0f);
   }
-  const std::optional<glm::dvec2> to = measureTarget();
-  if (!to) return;
-  const glm::dvec2 wb = canvas_.toWindow(*to);
+  if (!now.target) return;
+  const glm::dvec2 wb = canvas_.toWindow(*now.target);
   list->AddLine(im(wa), im(wb), kShadow, 3.0f);
   list->AddLine(im(wa), im(wb), kMeasureColour, 1.5f);
-  auto measured = measureObjects(withObjectMeasure(doc_->shot(), *measureFrom_, *to, height));
-  const std::string text = measured ? std::string(height ? "height " : "distance ") +
-                                          metrology::dimensionText(measured->results.back().valueM, measured->results.back().sigmaM)
-                                    : std::string("not on a surface");
-  labelAt(list, wb + glm::dvec2(12, 8), text);
+  labelAt(list, wb + glm::dvec2(12, 8), now.text);
+}
+
+// Once a frame (the overlay is drawn in up to four pieces around the loupe): the second
+// point as the cursor places it (snapped), the vertical for a height, the value.
+EditMode::MeasuringNow EditMode::measuringNow() const {
+  MeasuringNow now;
+  if (!doc_ || !measuring_ || !measureFrom_) return now;
+  const bool height = shiftHeld();
+  const glm::dvec2 cursor = measureSnap(canvas_.toPhoto(cursorPx_));
+  if (height) {
+    // On the vertical through the first point: the cursor's nearest point on its image.
+    now.vertical = verticalThrough(*measureFrom_);
+    if (!now.vertical) return now;
+    const glm::dvec2 dir = glm::normalize(now.vertical->second - now.vertical->first);
+    now.target = now.vertical->first + glm::dot(cursor - now.vertical->first, dir) * dir;
+  } else {
+    now.target = cursor;
+  }
+  auto measured = measureObjects(withObjectMeasure(doc_->shot(), *measureFrom_, *now.target, height));
+  now.text = measured ? std::string(height ? "height " : "distance ") +
+                            metrology::dimensionText(measured->results.back().valueM, measured->results.back().sigmaM)
+                      : std::string("not on a surface");
+  return now;
 }
 
 void EditMode::drawMeasurements(app::Shell& shell) {

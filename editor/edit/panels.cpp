@@ -281,11 +281,12 @@ void EditMode::drawCanvasOverlay() {
   const std::vector<WindowRect> pieces =
       magnifier ? around(canvas_.area(), magnifier->rect) : std::vector<WindowRect>{canvas_.area()};
   if (showOverlay_) {
+    const MeasuringNow measuring = measuringNow();
     for (const WindowRect& piece : pieces) {
       list->PushClipRect({float(piece.min.x), float(piece.min.y)}, {float(piece.max.x), float(piece.max.y)}, false);
       drawOverlay(list, input);
       drawCameraOverlay(list);
-      drawMeasureOverlay(list);
+      drawMeasureOverlay(list, measuring);
       list->PopClipRect();
     }
   }

@@ -306,6 +306,11 @@ void assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& 
   d.confident = d.doubts.empty();
 }
 
+// Each far corner (P1..P4, the Quad's order): the boundary that runs on from it and the
+// far wall's vertical side it lies on.
+constexpr std::array<int, 4> kBoundaryOfCorner = {kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight};
+constexpr std::array<int, 4> kVerticalOf = {kLeftSide, kRightSide, kLeftSide, kRightSide};
+
 // From a far wall found on the working copy (corners in working pixels, `farT` its
 // depth in the cross-section family's terms) to the detection: the far wall's sides
 // and the boundaries beyond it fitted at full resolution, then P5..P8, and the
@@ -366,7 +371,6 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   const auto rays = refineBoundaries(photo, vp, cornerDirection, fromRadius, searchPx, stepHalfWidthPx);
   if (hidden >= 0) {
     // The hidden side's corners where the boundary through each meets the side beside it.
-    constexpr std::array<int, 4> kBoundaryOfCorner = {kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight};
     constexpr std::array<std::array<int, 2>, 4> kCornerSides{{{kTopSide, kLeftSide}, {kTopSide, kRightSide},
                                                              {kBottomSide, kLeftSide}, {kBottomSide, kRightSide}}};
     for (int k : kSideCorners[hidden]) {
@@ -400,8 +404,6 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     std::array<glm::dvec2, kBoundaryCount> stepDirection{};
     for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
     const auto afresh = refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx);
-    constexpr std::array<int, 4> kBoundaryOfCorner = {kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight};
-    constexpr std::array<int, 4> kVerticalOf = {kLeftSide, kRightSide, kLeftSide, kRightSide};
     const double sideLength = std::min(glm::length(far.corners[P1] - far.corners[P3]), glm::length(far.corners[P2] - far.corners[P4]));
     for (int side : {kTopSide, kBottomSide}) {
       if (side == hidden) continue;
