@@ -92,6 +92,15 @@ struct ObjectMeasure {
   bool operator==(const ObjectMeasure&) const = default;
 };
 
+// An object in the photo to stand up in the model (`build`; modeling/stand_up.h): the
+// outline a person drew around it, which need not be tight (GrabCut finds the object
+// inside it), down to where it stands on the floor.
+struct Cutout {
+  std::string name;
+  std::vector<glm::dvec2> outlinePx;  // a polygon of 3 or more photo pixels (a rectangle: 4)
+  bool operator==(const Cutout&) const = default;
+};
+
 struct Shot {
   std::string imagePath;  // as resolved for opening (relative to the shot file's folder)
   int imageWidth = 0;     // filled from the image when it is loaded
@@ -113,6 +122,8 @@ struct Shot {
   // them (the shot file's "points" and "measurements").
   std::vector<ImagePoint> points;
   std::vector<ObjectMeasure> measurements;
+  // Objects to stand up in the model (the shot file's "cutouts").
+  std::vector<Cutout> cutouts;
 
   // Every field, the distortion and the points included (an edit of any of them is an edit).
   bool operator==(const Shot&) const = default;

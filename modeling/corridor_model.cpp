@@ -1,6 +1,7 @@
 #include "modeling/corridor_model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -241,6 +242,17 @@ glm::quat toQuat(const glm::dmat3& m) { return glm::normalize(glm::quat(glm::mat
 
 }  // namespace
 
+namespace {
+
+// A name as a file name's part: letters, digits, '-' and '_' kept, anything else '_'.
+std::string fileSafe(const std::string& name) {
+  std::string out;
+  for (unsigned char c : name) out += std::isalnum(c) || c == '-' || c == '_' ? static_cast<char>(c) : '_';
+  return out.empty() ? "object" : out;
+}
+
+}  // namespace
+
 engine::Image imageFromBgr(const cv::Mat& bgr) {
   cv::Mat rgba;
   cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);  // a new, continuous matrix
@@ -282,6 +294,18 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
     });
     model.nearEndColor = medianColor(model.textures[0]->image);
   }
+  return model;
+}
+
+Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo, const Measurement& measurement,
+                                        const std::vector<metrology::Cutout>& cutouts, bool attached,
+                                        const ModelOptions& options) {
+  if (cutouts.empty()) return makeCorridorModel(name, photo, measurement, attached, options);
+  auto stood = standUpObjects(photo, measurement, cutouts);
+  if (!stood) return makeError(name + ": " + stood.message());
+  auto model = makeCorridorModel(name, stood->behind, measurement, attached, options);
+  if (!model) return model;
+  model->standing = std::move(stood->objects);
   return model;
 }
 
@@ -372,6 +396,32 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                    std::string(surfaceName(surface)) + "_near");
         }
       }
+    }
+    // Objects stood up: each a vertical cut-out on the floor, its texture's alpha the
+    // object's mask, seen from both sides.
+    for (const StandingObject& object : model.standing) {
+      engine::Mesh mesh;
+      for (const glm::dvec3& corner : object.cornersM) mesh.positions.emplace_back(corner);
+      mesh.normals.assign(4, glm::vec3(object.normal));
+      mesh.texCoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+      mesh.indices = {0, 1, 2, 0, 2, 3};
+      mesh.solid = false;
+      auto texture = std::make_shared<engine::Texture>();
+      texture->image = std::make_shared<engine::Image>(object.image);
+      const std::string label = "standing_" + fileSafe(object.name);
+      texture->url = model.name + "_" + label + ".png";
+      texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
+      auto appearance = std::make_shared<engine::Appearance>();
+      appearance->texture = texture;
+      if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
+      addShape(std::move(mesh), appearance, label);
+      char line[320];
+      std::snprintf(line, sizeof line,
+                    "stood up: %s (%s_%s), a cut-out %.2f m wide and %.2f m high on the floor at x %.2f m, z %.2f m, "
+                    "%.2f m from the photo's camera",
+                    object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.heightM,
+                    object.footM.x, object.footM.z, object.distanceM);
+      scene.info.push_back(line);
     }
     // Which parts are synthesized, for people and other viewers (WorldInfo info text).
     for (int s = 1; s < kFaces; ++s) {

@@ -12,6 +12,7 @@
 
 #include "base/result.h"
 #include "modeling/layout.h"
+#include "modeling/stand_up.h"
 #include "modeling/synthesis.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/scene.h"
@@ -67,6 +68,9 @@ struct CorridorModel {
   std::array<std::optional<SurfaceTexture>, 5> extensions;
   std::array<SynthesisStats, 5> synthesis{};
   glm::vec3 nearEndColor{0.5f};
+  // Objects stood up on the floor (stand_up.h); the textures above were cut from the
+  // photo with them filled.
+  std::vector<StandingObject> standing;
   // Per surface, for its untextured parts: the mean of the photo's pixels where it
   // shows the surface, averaged as stored (sRGB-encoded, not linear light), 0..1.
   std::array<glm::vec3, 5> meanColor{};
@@ -79,6 +83,14 @@ engine::Image imageFromBgr(const cv::Mat& bgr);
 // `attached`: the corridor starts at another's wall, so nothing runs towards its camera.
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,
                                         const metrology::Measurement& measurement, bool attached,
+                                        const ModelOptions& options);
+
+// The same with `cutouts` stood up on the floor (stand_up.h): the surfaces are cut from
+// the photo with the objects filled, and the model holds them in `standing`. Errors
+// name the object (and the corridor).
+Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,
+                                        const metrology::Measurement& measurement,
+                                        const std::vector<metrology::Cutout>& cutouts, bool attached,
                                         const ModelOptions& options);
 
 // A whole building (or one corridor): shapes, lights, viewpoints, navigation.

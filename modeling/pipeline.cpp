@@ -109,7 +109,7 @@ Result<BuiltModel> buildModel(const Layout& layout, const std::vector<MeasuredSh
     const modeling::LayoutEntry& entry = layout.corridors[i];
     const MeasuredShot& measured = shots[i];
     auto corridor = modeling::makeCorridorModel(entry.name, measured.loaded.image, measured.measurement,
-                                                entry.attach.has_value(), options);
+                                                measured.loaded.shot.cutouts, entry.attach.has_value(), options);
     if (!corridor) return corridor.error();
     boxes.push_back(corridor->box);
     model.corridors.push_back(std::move(*corridor));

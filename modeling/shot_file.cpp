@@ -182,12 +182,45 @@ Status readShotObjects(const json& fields, const std::string& where, std::vector
   return {};
 }
 
+// A shot file's objects to stand up (README "Standing objects up"):
+//   "cutouts": [{"name": "person", "outline_px": [[u, v], [u, v], [u, v], ...]}, ...]
+Status readCutouts(const json& fields, const std::string& where, std::vector<metrology::Cutout>& cutouts) {
+  if (!fields.contains("cutouts")) return {};
+  const json& list = fields["cutouts"];
+  const std::string form = "cutouts is [{\"name\": NAME, \"outline_px\": [[u, v], [u, v], [u, v], ...]}, ...]";
+  if (!list.is_array()) return makeError(where + ": " + form);
+  for (size_t i = 0; i < list.size(); ++i) {
+    const json& c = list[i];
+    const std::string at = where + ": cutouts[" + std::to_string(i) + "]";
+    if (!c.is_object() || !c.contains("name") || !c["name"].is_string() || !c.contains("outline_px") ||
+        !c["outline_px"].is_array()) {
+      return makeError(at + ": " + form);
+    }
+    metrology::Cutout cutout;
+    cutout.name = c["name"].get<std::string>();
+    if (cutout.name.empty()) return makeError(at + ": its name is empty");
+    for (const json& p : c["outline_px"]) {
+      if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) return makeError(at + ": " + form);
+      const glm::dvec2 px(p[0].get<double>(), p[1].get<double>());
+      if (!std::isfinite(px.x) || !std::isfinite(px.y)) return makeError(at + ": an outline point is not a number");
+      cutout.outlinePx.push_back(px);
+    }
+    if (cutout.outlinePx.size() < 3) return makeError(at + ": its outline needs 3 points or more (a rectangle: 4)");
+    for (const metrology::Cutout& earlier : cutouts) {
+      if (earlier.name == cutout.name) return makeError(at + ": the name \"" + cutout.name + "\" is used twice");
+    }
+    cutouts.push_back(std::move(cutout));
+  }
+  return {};
+}
+
 }  // namespace
 
 // The fields readShotFile reads and writeShotFile writes.
 constexpr const char* kShotFields[] = {"image",           "image_size",      "focal_px",  "focal_mm",
                                        "sensor_width_mm", "principal_point", "camera_height_m", "corners_px",
-                                       "reference",       "distortion",      "points",          "measurements"};
+                                       "reference",       "distortion",      "points",          "measurements",
+                                       "cutouts"};
 
 Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bool allowNoScale) {
   const std::string where = path.string();
@@ -303,6 +336,7 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bo
     shot.distortion = d;
   }
   if (Status read = readShotObjects(doc, where, shot.points, shot.measurements); !read) return makeError(read.message());
+  if (Status read = readCutouts(doc, where, shot.cutouts); !read) return makeError(read.message());
   if (doc.contains("image_size")) {
     const json& size = doc["image_size"];
     if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
@@ -425,6 +459,15 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
       measurements.push_back(entry);
     }
     doc["measurements"] = measurements;
+  }
+  if (!shot.cutouts.empty()) {
+    json cutouts = json::array();
+    for (const metrology::Cutout& c : shot.cutouts) {
+      json outline = json::array();
+      for (const glm::dvec2& p : c.outlinePx) outline.push_back({p.x, p.y});
+      cutouts.push_back({{"name", c.name}, {"outline_px", outline}});
+    }
+    doc["cutouts"] = cutouts;
   }
   return doc;
 }

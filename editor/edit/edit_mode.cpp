@@ -225,13 +225,19 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
       if (!planMode_.empty()) shell.requestMode(planMode_);
       break;
     case GLFW_KEY_M:
+      setOutlining(shell, false);
       setMeasuring(shell, !measuring_);
+      break;
+    case GLFW_KEY_U:
+      setOutlining(shell, !outlining_);
       break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);  // the corner goes back to where the drag began
       pickingReference_ = false;
       measuring_ = false;
       measureFrom_.reset();
+      outlining_ = false;
+      outlineFrom_.reset();
       break;
     default:
       break;
@@ -240,6 +246,7 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
 
 void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
   if (!e.down) {
+    if (outlineFrom_ && e.button == GLFW_MOUSE_BUTTON_LEFT) (void)outlineButton(shell, false);
     if (drag_ && e.button == GLFW_MOUSE_BUTTON_LEFT) endDrag(true);
     if (panFrom_ && e.button == panButton_) panFrom_.reset();
     return;
@@ -253,6 +260,7 @@ void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
   }
   if (e.button != GLFW_MOUSE_BUTTON_LEFT) return;
   if (measuring_ && measureClick(shell)) return;  // measuring: clicks place points, not grab corners
+  if (outlining_ && outlineButton(shell, true)) return;  // outlining: a drag is a rectangle, not a corner's
   const int corner = handleAt(canvas_, doc_->shot(), cursorPx_, kGrabRadiusPx);
   if (pickingReference_ && pickReference(shell, corner)) return;
   select(corner);
@@ -575,6 +583,7 @@ void EditMode::traceRow(app::TraceRow& row) const {
   }
   addCameraTrace(row);
   addObjectsTrace(row);
+  addCutoutsTrace(row);
   const std::optional<Shot> modelShot = doc_ ? std::optional<Shot>(doc_->modelShot()) : std::nullopt;
   row.add("preview", preview_.trace(modelShot ? &*modelShot : nullptr));
   row.add("walk_model", walkModelFrom_.empty() ? ordered_json(nullptr) : ordered_json(walkModelFrom_));

@@ -184,6 +184,14 @@ class EditMode : public app::AppMode {
   void drawMeasureOverlay(ImDrawList* list, const MeasuringNow& now) const;
   void drawMeasurements(app::Shell& shell);
   void addObjectsTrace(app::TraceRow& row) const;
+  // stand_up_tool.cpp: U, a rectangle dragged around an object stands it up in the model
+  // (the shot's cutouts), listed, renamed, deleted, drawn, traced ("cutouts").
+  void setOutlining(app::Shell& shell, bool on);
+  bool outlineButton(app::Shell& shell, bool down);  // a press or release while outlining (true: taken)
+  void deleteCutout(app::Shell& shell, size_t index);
+  void drawCutoutOverlay(ImDrawList* list) const;
+  void drawCutouts(app::Shell& shell);
+  void addCutoutsTrace(app::TraceRow& row) const;
   void drawCanvasOverlay();
   void drawEmptyHint(app::Shell& shell);
 
@@ -248,6 +256,10 @@ class EditMode : public app::AppMode {
   std::string objectsError_;
   std::vector<std::array<char, 64>> nameBuffers_;  // the Measurements list's name fields
   int renaming_ = -1;                               // the one being typed into, or -1
+  bool outlining_ = false;                          // U: dragging rectangles stands objects up
+  std::optional<glm::dvec2> outlineFrom_;           // the rectangle's first corner (photo pixels), while dragged
+  std::vector<std::array<char, 64>> cutoutNameBuffers_;
+  int renamingCutout_ = -1;
   // The Camera panel's widgets as last drawn (window pixels), by name: the trace's
   // "camera"."widgets", so that replay scripts can click them.
   std::vector<std::pair<std::string, WindowRect>> widgetRects_;

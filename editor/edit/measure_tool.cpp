@@ -129,12 +129,7 @@ std::optional<glm::dvec2> snapToPhoto(const cv::Mat& photo, glm::dvec2 px, doubl
   return best;
 }
 
-// On a dark plate, so that it reads over the photo and over the box's own lines.
-void labelAt(ImDrawList* list, glm::dvec2 at, const std::string& text) {
-  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-  list->AddRectFilled(im(at - glm::dvec2(3, 1)), im(at + glm::dvec2(size.x + 3, size.y + 1)), IM_COL32(0, 0, 0, 170), 3.0f);
-  list->AddText(im(at), kMeasureColour, text.c_str());
-}
+void labelAt(ImDrawList* list, glm::dvec2 at, const std::string& text) { ui::labelOnPlate(list, im(at), text, kMeasureColour); }
 
 }  // namespace
 

@@ -15,7 +15,8 @@ Result<engine::Scene> buildCorridorScene(const metrology::Shot& shot, const cv::
                                          const metrology::Measurement& measurement,
                                          const modeling::ModelOptions& options) {
   const std::string name = std::filesystem::path(shot.imagePath).stem().string();
-  auto corridor = modeling::makeCorridorModel(name.empty() ? "corridor" : name, photo, measurement, false, options);
+  auto corridor =
+      modeling::makeCorridorModel(name.empty() ? "corridor" : name, photo, measurement, shot.cutouts, false, options);
   if (!corridor) return corridor.error();
   modeling::Layout layout;
   modeling::LayoutEntry entry;

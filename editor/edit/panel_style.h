@@ -1,6 +1,6 @@
 // What the editor's ImGui panels share (panels.cpp, camera_panel.cpp, files_ui.cpp,
 // building_panel.cpp, building_question.cpp): the fixed side-panel window, the
-// colours of notes, warnings and errors, and two small helpers.
+// colours of notes, warnings and errors, and small helpers.
 #pragma once
 
 #include <imgui.h>
@@ -31,6 +31,14 @@ inline void wrapped(const ImVec4& colour, const std::string& text) {
 inline WindowRect currentWindowRect() {
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   return {{pos.x, pos.y}, {pos.x + size.x, pos.y + size.y}};
+}
+
+// A label drawn on the photo at `at` (window pixels), on a dark plate so that it reads
+// over the photo and over the box's own lines.
+inline void labelOnPlate(ImDrawList* list, ImVec2 at, const std::string& text, ImU32 colour) {
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  list->AddRectFilled({at.x - 3, at.y - 1}, {at.x + size.x + 3, at.y + size.y + 1}, IM_COL32(0, 0, 0, 170), 3.0f);
+  list->AddText(at, colour, text.c_str());
 }
 
 }  // namespace pw::edit::ui

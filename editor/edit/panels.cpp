@@ -29,6 +29,8 @@ const char* const kKeys =
     "Alt+1..8           select P1..P8\n"
     "arrow keys         nudge 1 px (Shift: 0.1 px)\n"
     "E                  fit the corners to the photo's edges\n"
+    "M                  measure: two clicks (Shift: a height)\n"
+    "U                  stand up: drag a rectangle around an object\n"
     "Esc                cancel a drag\n"
     "Ctrl+Z             undo\n"
     "Ctrl+Shift+Z, Ctrl+Y  redo\n"
@@ -158,6 +160,7 @@ void EditMode::drawPanel(app::Shell& shell) {
   drawMeasurement();
   drawCamera(shell);
   drawMeasurements(shell);
+  drawCutouts(shell);
   drawCorners(shell);
   if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(kKeys);
   ImGui::End();
@@ -287,6 +290,7 @@ void EditMode::drawCanvasOverlay() {
       drawOverlay(list, input);
       drawCameraOverlay(list);
       drawMeasureOverlay(list, measuring);
+      drawCutoutOverlay(list);
       list->PopClipRect();
     }
   }

@@ -39,6 +39,9 @@ metrology::Shot scaledShot(const metrology::Shot& shot, glm::ivec2 size) {
   scaled.focalPx = shot.focalPx * k.x;
   scaled.focalMm.reset();
   for (glm::dvec2& corner : scaled.cornersPx) corner = scale(corner);
+  for (metrology::Cutout& cutout : scaled.cutouts) {
+    for (glm::dvec2& p : cutout.outlinePx) p = scale(p);
+  }
   return scaled;
 }
 

@@ -34,7 +34,8 @@ inline constexpr int kReducedPhotoSidePx = 1024;
 cv::Mat reducePhoto(const cv::Mat& photo, int longestSidePx);
 
 // `shot` in the pixels of its photo resized to `size` (pixel centres scaled:
-// (p + 0.5) * size / imageSize - 0.5; the focal length in pixels with the width).
+// (p + 0.5) * size / imageSize - 0.5, the corners and the cutouts' outlines; the focal
+// length in pixels with the width).
 // Dimensions in metres measure the same; focalMm is dropped (focalPx says it).
 metrology::Shot scaledShot(const metrology::Shot& shot, glm::ivec2 size);
 

@@ -13,6 +13,18 @@ usage:
       the same for every seed FIRST..LAST (inclusive), N povray runs at a time;
       prints the mean render time per scene.
 
+  random_corridors.py views SEED OUTDIR
+      renders the seed's scene from the novel-view cameras (NOVEL_VIEWS below: cameras
+      the photo was not taken from, on the corridor's centre line at the photo's eye
+      height, 640 px wide with the photo's field of view) as
+      seed_NNNNN_view_KIND.png with seed_NNNNN_view_KIND.json (the camera, in the form
+      make_corridors.py's views have); an unchanged view is not rendered again.
+
+  random_corridors.py standing SEED OUTDIR
+      writes seed_NNNNN_standing.json from the seed's answers and mask (scene --mask
+      first): the shot with a cutout (a rectangle around it) for each person, plant
+      and bin whose foot the photo shows (write_standing).
+
 A seed fully determines its scene (random.Random(seed); the noise of the JPEG is
 seeded by it too). The scenes have what real corridors have and make_corridors.py's
 scenes lack: no painted band; floors glossy with reflections or matte; ceiling lamps,
@@ -1025,6 +1037,119 @@ def make_one(seed, outdir, size_scale=1.0, render=True, mask=False, threads=2):
     return took
 
 
+# Cameras the photo was not taken from, in the model frame (make_corridors.py's kinds):
+# mid-corridor looking ahead; a quarter in, turned 35 degrees to the left wall; near the
+# far end, looking back. At the photo's eye height, on the centre line.
+NOVEL_VIEW_WIDTH = 640
+NOVEL_VIEWS = {
+    "ahead": lambda s: ([0.0, s["eye"][1], -s["length"] / 2.0], [0.0, 0.0, 0.0]),
+    "turned": lambda s: ([0.0, s["eye"][1], -s["length"] / 4.0], [35.0, 0.0, 0.0]),
+    "back": lambda s: ([0.0, s["eye"][1], -s["length"] + 1.0], [180.0, 0.0, 0.0]),
+}
+
+
+def make_views(seed, outdir, threads=2):
+    """Renders the seed's novel views into outdir (each only when its .pov changed)."""
+    s = make_scene(seed)
+    photo_cam = Camera(s["eye"], s["ypr"], s["size"], s["focal_px"], s["principal"])
+    pov = scene_pov(s)
+    if photo_cam.pov(0.0) not in pov:
+        raise RuntimeError("seed %d: the scene's camera block is not where views expect it" % seed)
+    w, h = s["size"]
+    vw = NOVEL_VIEW_WIDTH
+    vh = int(round(vw * h / w / 2)) * 2
+    for kind, place in NOVEL_VIEWS.items():
+        eye, ypr = place(s)
+        cam = Camera(eye, ypr, (vw, vh), s["focal_px"] * vw / w)
+        base = os.path.join(outdir, "seed_%05d_view_%s" % (seed, kind))
+        view_pov = pov.replace(photo_cam.pov(0.0), cam.pov(0.0), 1)
+        same = os.path.exists(base + ".png") and os.path.exists(base + ".pov") and open(base + ".pov").read() == view_pov
+        if not same:
+            write_atomic(base + ".pov", view_pov)
+            povray(base + ".pov", base + ".png", (vw, vh), ["+FN8", "+A0.3"], threads)
+        write_atomic(base + ".json", json.dumps({"scene": "seed_%05d" % seed, "image_size": [vw, vh], "focal_px": cam.focal_px,
+                                                 "principal_point": cam.principal, "eye_m": cam.eye, "yaw_deg": ypr[0],
+                                                 "pitch_deg": ypr[1], "roll_deg": ypr[2]}, indent=1) + "\n")
+
+
+# The objects a person stands up by default (bench/standing_views.py, the groundtruth
+# target): the floor's free-standing ones.
+STANDING_KINDS = {"person", "plant", "bin"}
+STANDING_MIN_PIXELS = 150
+STANDING_MARGIN_PX = 4
+
+
+def read_mask_ids(path):
+    """(width, height, the id of every pixel) of a mask render (a binary PPM)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    tokens, pos = [], 0
+    while len(tokens) < 4:
+        while data[pos:pos + 1].isspace():
+            pos += 1
+        if data[pos:pos + 1] == b"#":
+            pos = data.index(b"\n", pos) + 1
+            continue
+        end = pos
+        while not data[end:end + 1].isspace():
+            end += 1
+        tokens.append(data[pos:end])
+        pos = end
+    w, h = int(tokens[1]), int(tokens[2])
+    pix = data[pos + 1:pos + 1 + 3 * w * h]
+    return w, h, [mask_id(pix[3 * i], pix[3 * i + 1]) for i in range(w * h)]
+
+
+def write_standing(seed, outdir, kinds=STANDING_KINDS):
+    """Writes seed_NNNNN_standing.json beside the seed's files (its .json and _mask.ppm):
+    the shot with a cutout for each object of `kinds` the photo shows over 150 px with its
+    foot in view (its rectangle not reaching the photo's bottom edge, nor cut off above its footprint's middle
+    by another object before it) on the corridor's floor, a rectangle 4 px beyond its pixels in the mask, as a
+    person draws one around it. No such object: no file (a stale one is removed).
+    Returns the number of cutouts."""
+    base = os.path.join(outdir, "seed_%05d" % seed)
+    with open(base + ".json") as f:
+        ans = json.load(f)
+    w, h, ids = read_mask_ids(base + "_mask.ppm")
+    boxes = {}
+    for i, v in enumerate(ids):
+        if v >= OBJECT_ID0:
+            u, y = i % w, i // w
+            b = boxes.setdefault(v, [u, y, u, y, 0])
+            b[0], b[1], b[2], b[3], b[4] = min(b[0], u), min(b[1], y), max(b[2], u), max(b[3], y), b[4] + 1
+    cutouts = []
+    for ob in ans["objects"]:
+        b = boxes.get(ob["mask_id"])
+        if ob["kind"] not in kinds or not b or b[4] < STANDING_MIN_PIXELS or b[3] + STANDING_MARGIN_PX >= h - 1:
+            continue
+        foot = ob["keypoints_px"].get("feet") or ob["keypoints_px"].get("base")
+        if b[3] < foot[1] - 1:
+            continue
+        x, _, z = ob["place_m"]  # on this corridor's floor (not in a hall beyond its end)
+        if abs(x) > ans["width_m"] / 2 or z < -ans["length_m"]:
+            continue
+        m = STANDING_MARGIN_PX
+        x0, y0, x1, y1 = max(0, b[0] - m), max(0, b[1] - m), min(w - 1, b[2] + m), min(h - 1, b[3] + m)
+        cutouts.append({"name": "%s_%d" % (ob["kind"], ob["id"]), "outline_px": [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]})
+    standing = base + "_standing.json"
+    if cutouts:
+        shot = dict(ans)
+        shot["cutouts"] = cutouts
+        write_atomic(standing, json.dumps(shot, indent=1) + "\n")
+    elif os.path.exists(standing):
+        os.unlink(standing)
+    return len(cutouts)
+
+
+def cmd_standing(args):
+    print("%d cutouts" % write_standing(args.seed, args.out))
+
+
+def cmd_views(args):
+    os.makedirs(args.out, exist_ok=True)
+    make_views(args.seed, args.out)
+
+
 def cmd_scene(args):
     os.makedirs(args.out, exist_ok=True)
     took = make_one(args.seed, args.out, args.size_scale, not args.no_render, args.mask)
@@ -1060,6 +1185,14 @@ def main():
     r.add_argument("out")
     r.add_argument("-j", "--jobs", type=int, default=1)
     r.set_defaults(func=cmd_range)
+    v = sub.add_parser("views")
+    v.add_argument("seed", type=int)
+    v.add_argument("out")
+    v.set_defaults(func=cmd_views)
+    st = sub.add_parser("standing")
+    st.add_argument("seed", type=int)
+    st.add_argument("out")
+    st.set_defaults(func=cmd_standing)
     for q in (p, r):
         q.add_argument("--size-scale", type=float, default=1.0)
         q.add_argument("--no-render", action="store_true")

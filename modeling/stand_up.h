@@ -1,0 +1,57 @@
+// Objects stood up (issue 25, part 3): what stands in front of the walls (a person, a
+// cabinet, a pillar) becomes a cut-out standing on the floor instead of a smear painted
+// across the floor and the wall behind it, as Tour Into the Picture (Horry et al., 1997)
+// stood up its foreground objects.
+//
+// A person outlines the object in the photo (the shot's `cutouts`); OpenCV's GrabCut
+// finds the object inside the outline; the object's lowest pixel is where it meets the
+// floor. The cut-out is a vertical rectangle through that floor point, facing the photo's
+// camera, as wide and as high as the object's pixels reach on it, textured with the photo
+// and with the object's mask as alpha. From the photo's camera it covers exactly the
+// object's pixels, so the model still gives the photo back; from elsewhere the object
+// stands in the corridor. The floor and walls behind it are filled from their
+// surroundings (inpainting), so that they no longer carry it.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <opencv2/core/mat.hpp>
+
+#include "base/result.h"
+#include "engine/scene/image.h"
+#include "metrology/measure.h"
+#include "metrology/shot.h"
+
+namespace pw::modeling {
+
+struct StandingObject {
+  std::string name;
+  // The cut-out in the corridor's model frame: bottom-left, bottom-right, top-right,
+  // top-left as the photo's camera sees it; the bottom edge on the floor (y = 0).
+  std::array<glm::dvec3, 4> cornersM{};
+  glm::dvec3 footM{0.0};    // where the object's lowest pixel meets the floor
+  glm::dvec3 normal{0.0};   // horizontal, towards the photo's camera
+  double widthM = 0;        // the rectangle's, as the object's pixels reach on it
+  double heightM = 0;
+  double distanceM = 0;     // from the photo's camera to the foot, along the floor
+  engine::Image image;      // RGBA: the photo on the rectangle, alpha the object's mask
+  int maskPixels = 0;       // photo pixels GrabCut gave the object
+};
+
+struct StoodUp {
+  std::vector<StandingObject> objects;
+  cv::Mat behind;  // the photo (BGR) with the objects' pixels filled from their surroundings
+  cv::Mat mask;    // CV_8U, the photo's size: 255 where an object is (before the fill's margin)
+};
+
+// Stands up each of `cutouts` in the measured corridor seen in `photo` (BGR, 8 bit).
+// Errors name the object: an outline outside the photo, an object GrabCut and the
+// outline leave empty, a lowest pixel above the horizon (it does not stand on the
+// floor the photo shows) or beyond the corridor's floor.
+Result<StoodUp> standUpObjects(const cv::Mat& photo, const metrology::Measurement& measurement,
+                               const std::vector<metrology::Cutout>& cutouts);
+
+}  // namespace pw::modeling
