@@ -26,14 +26,7 @@ from concurrent.futures import ThreadPoolExecutor
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "groundtruth"))
 import random_corridors as rc  # noqa: E402
-
-def parse_seeds(text):
-    seeds = []
-    for part in text.split(","):
-        a, _, b = part.partition("-")
-        seeds += list(range(int(a), int(b or a) + 1))
-    return seeds
-
+from detect_heldout import parse_seeds  # noqa: E402  (the same seed ranges)
 
 def prepare(seed, cache, kinds):
     """Renders what is missing for the seed and writes its standing shot (or removes a stale one)."""

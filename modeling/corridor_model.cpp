@@ -411,6 +411,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       const std::string label = "standing_" + fileSafe(object.name);
       texture->url = model.name + "_" + label + ".png";
       texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
+      texture->sourceFromTexCoord = object.sourceFromTexCoord;
       auto appearance = std::make_shared<engine::Appearance>();
       appearance->texture = texture;
       if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));

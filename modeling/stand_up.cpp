@@ -9,6 +9,7 @@
 
 #include "metrology/corridor_frame.h"
 #include "metrology/distortion.h"
+#include "metrology/rectify.h"
 
 namespace pw::modeling {
 namespace {
@@ -174,6 +175,16 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   cv::remap(halo, alpha, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
   cv::cvtColor(colour, rgba, cv::COLOR_BGR2RGBA);
   cv::mixChannels(std::vector<cv::Mat>{alpha}, std::vector<cv::Mat>{rgba}, {0, 3});
+  // Texture coordinates to the photo's pinhole pixels: metric x = s W, y = (1 - t) H
+  // from the top-left corner, as the surfaces' textures (corridor_model.cpp).
+  const cv::Matx33d photoFromMetric = metrology::photoFromPlane(m.camera, m.pose, object.cornersM[3], right, -up);
+  const cv::Matx33d photoFromTexCoord =
+      photoFromMetric * cv::Matx33d(object.widthM, 0, 0, 0, -object.heightM, object.heightM, 0, 0, 1);
+  for (int c = 0; c < 3; ++c) {
+    for (int row = 0; row < 3; ++row) {
+      object.sourceFromTexCoord[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
+    }
+  }
   object.image.width = w;
   object.image.height = h;
   object.image.rgba.assign(rgba.data, rgba.data + rgba.total() * 4);

@@ -38,6 +38,9 @@ struct StandingObject {
   double heightM = 0;
   double distanceM = 0;     // from the photo's camera to the foot, along the floor
   engine::Image image;      // RGBA: the photo on the rectangle, alpha the object's mask
+  // Its texture coordinates (s, t, 1), t = 0 at the bottom, to the photo's pinhole pixels
+  // (engine::Texture::sourceFromTexCoord): the renderer reads it as the photo was seen.
+  glm::mat3 sourceFromTexCoord{1.0f};
   int maskPixels = 0;       // photo pixels GrabCut gave the object
 };
 

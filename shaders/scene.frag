@@ -55,7 +55,9 @@ vec3 litColor(const vec3 OD, const MaterialGpu m) {
 // was taken), the detail fades in: none at a photo pixel per screen pixel, all of it
 // at half one. A supersampled frame (Camera::supersample) counts the pixels of the image
 // it is averaged down to.
-vec3 samplePhotoTexture(const vec2 uv) {
+// A cut-out's texture (an object stood up: its alpha the object's coverage, no detail
+// layer; kMaterialTextureAlpha) is read the same way, and its alpha kept.
+vec4 samplePhotoTexture(const vec2 uv, const bool alphaIsCoverage) {
   const vec2 photo = inPhoto.xy / inPhoto.z;
   const vec2 texels = vec2(draw.textureSource[1].w, draw.textureSource[2].w);
   const vec2 uvX = dFdx(uv), uvY = dFdy(uv);
@@ -68,8 +70,9 @@ vec3 samplePhotoTexture(const vec2 uv) {
   const float scaleX = sqrt(max(0.0, 1.0 - 1.0 / jX2));
   const float scaleY = sqrt(max(0.0, 1.0 - 1.0 / jY2));
   const vec4 texel = textureGrad(shapeTexture, uv, uvX * scaleX, uvY * scaleY);
+  if (alphaIsCoverage) return texel;
   const float octaves = (texel.a * 255.0 - 128.0) / PW_DETAIL_CODES_PER_OCTAVE;
-  return texel.rgb * exp2(detail * octaves);
+  return vec4(texel.rgb * exp2(detail * octaves), 1.0);
 }
 
 vec3 encodeSrgb(const vec3 linear) {
@@ -89,7 +92,8 @@ void main() {
   if (kTextured) {
     // _SRGB format: already linear. A specialization constant, not a push constant:
     // lavapipe ran both sides of a run-time branch around texture(), 40% of a frame.
-    const vec4 texel = kPhotoTexture ? vec4(samplePhotoTexture(inTexCoord), 1.0) : texture(shapeTexture, inTexCoord);
+    const vec4 texel = kPhotoTexture ? samplePhotoTexture(inTexCoord, (flags & kMaterialTextureAlpha) != 0u)
+                                     : texture(shapeTexture, inTexCoord);
     // VRML97 table 4.5: an RGB(A) texture replaces the diffuse colour, a grey one
     // (intensity) modulates it.
     OD = (flags & kMaterialIntensityTexture) != 0u ? OD * texel.r : texel.rgb;

@@ -224,9 +224,10 @@ Result<PackedScene> packScene(const Scene& scene) {
     if (source) draw.textureSource = *source;
     draw.variant.topology = mesh.topology;
     draw.variant.textured = textureSlot != 0;
-    // A texture cut from a photo is opaque: its alpha holds the detail layer. One with
-    // transparent texels is drawn as any other.
-    draw.variant.photoTexture = source.has_value() && !textureAlpha && mesh.topology == Topology::kTriangles;
+    // A texture cut from a photo is drawn as the photo was seen (scene.frag's
+    // samplePhotoTexture): an opaque one's alpha holds the detail layer; one with
+    // transparent texels (a cut-out standing in the model) keeps its alpha as coverage.
+    draw.variant.photoTexture = source.has_value() && mesh.topology == Topology::kTriangles;
     draw.variant.lit = (flags & kMaterialUnlit) == 0;
     // The texture's alpha replaces the material's transparency (VRML97 4.14.3, table 4.5).
     const bool alphaFromTexture = textureAlpha;

@@ -35,33 +35,9 @@ from make_corridors import Camera  # noqa: E402
 DEFAULT_SEEDS = [900000, 900002, 900007, 900011, 900022]
 
 
-def read_ppm(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    tokens, pos = [], 0
-    while len(tokens) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b"#":
-            pos = data.index(b"\n", pos) + 1
-            continue
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        tokens.append(data[pos:end])
-        pos = end
-    assert tokens[0] == b"P6" and tokens[3] == b"255", "not an 8-bit binary PPM: %s" % path
-    w, h = int(tokens[1]), int(tokens[2])
-    pix = data[pos + 1:pos + 1 + 3 * w * h]
-    ids = bytearray(w * h)
-    for i in range(w * h):
-        ids[i] = rc.mask_id(pix[3 * i], pix[3 * i + 1])
-    return w, h, ids
-
-
 class Mask:
     def __init__(self, path):
-        self.w, self.h, self.ids = read_ppm(path)
+        self.w, self.h, self.ids = rc.read_mask_ids(path)
 
     def at(self, u, v):
         """The id at the pixel whose centre is (u, v) (integers), None outside."""

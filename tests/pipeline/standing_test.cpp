@@ -119,11 +119,12 @@ TEST(StandingObjects, TheModelStillGivesThePhotoBackAndStandsHerUpElsewhere) {
   auto renderer = cpuRenderer();
   ASSERT_TRUE(renderer);
   const BuiltModel flat = built(kFlatShot), standing = built(kStandingShot);
-  // From the photo's camera: measured 37.56 dB flat, 37.5 dB stood up.
+  // From the photo's camera: measured 37.56 dB flat, 37.62 dB stood up (the cut-out is
+  // read as the photo was seen, as the surfaces are).
   const double flatPhoto = photoPsnr(*renderer, flat, kFlatShot), standingPhoto = photoPsnr(*renderer, standing, kStandingShot);
-  EXPECT_GT(standingPhoto, flatPhoto - 0.5);
+  EXPECT_GT(standingPhoto, flatPhoto - 0.1) << "flat " << flatPhoto << " dB, stood up " << standingPhoto << " dB";
   // A quarter in, turned to the left wall, where she stands: measured 20.61 dB flat,
-  // 23.5 dB stood up.
+  // 22.88 dB stood up.
   const test::NovelView turned = test::loadNovelView(kDir, "seed_00000", "turned");
   std::string error;
   const cv::Mat flatView = test::renderView(*renderer, flat.scene, turned, error);
@@ -132,7 +133,7 @@ TEST(StandingObjects, TheModelStillGivesThePhotoBackAndStandsHerUpElsewhere) {
   ASSERT_FALSE(standingView.empty()) << error;
   const double flatPsnr = test::scoreView(flatView, turned.truth).psnrDb;
   const double standingPsnr = test::scoreView(standingView, turned.truth).psnrDb;
-  EXPECT_GT(standingPsnr, flatPsnr + 2.0) << "flat " << flatPsnr << " dB, stood up " << standingPsnr << " dB";
+  EXPECT_GT(standingPsnr, flatPsnr + 1.5) << "flat " << flatPsnr << " dB, stood up " << standingPsnr << " dB";
   const fs::path out = fs::path(PW_BINARY_DIR) / "test-output" / "standing";
   fs::create_directories(out);
   cv::imwrite((out / "turned_flat.png").string(), flatView);
