@@ -19,6 +19,7 @@ using metrology::Measurement;
 // GrabCut works on the outline's box and this much around it (photo pixels, at least).
 constexpr int kGrabCutMarginPx = 12;
 constexpr int kGrabCutIterations = 5;
+constexpr double kGrabCutMaxPixels = 250000;
 constexpr double kMinPiecePx = 12;
 constexpr double kMinPieceShare = 0.02;
 // The cut-out's alpha reaches this far beyond the object's mask (photo pixels), and the
@@ -51,8 +52,23 @@ cv::Mat objectMask(const cv::Mat& photo, const std::vector<cv::Point>& outline) 
     // GrabCut seeds its colour models from OpenCV's (thread's) random generator: seeded
     // here, the same photo and outline always give the same mask, whatever ran before.
     cv::theRNG().state = 0x12345678u;
-    cv::grabCut(photo(roi), labels, cv::Rect(), background, foreground, kGrabCutIterations, cv::GC_INIT_WITH_MASK);
-    cv::Mat object = (labels == cv::GC_FGD) | (labels == cv::GC_PR_FGD);
+    // On a large photo (a 12 MP phone's person is a few million pixels) GrabCut runs on
+    // the region shrunk to kGrabCutMaxPixels, and its mask is taken back to full size
+    // inside the outline: its time stays bounded, as the editor's rebuilds need.
+    const double shrink = std::min(1.0, std::sqrt(kGrabCutMaxPixels / static_cast<double>(roi.area())));
+    cv::Mat region = photo(roi), object;
+    if (shrink < 1.0) {
+      const cv::Size small(std::max(8, static_cast<int>(std::lround(roi.width * shrink))),
+                           std::max(8, static_cast<int>(std::lround(roi.height * shrink))));
+      cv::resize(region, region, small, 0, 0, cv::INTER_AREA);
+      cv::resize(labels, labels, small, 0, 0, cv::INTER_NEAREST);
+    }
+    cv::grabCut(region, labels, cv::Rect(), background, foreground, kGrabCutIterations, cv::GC_INIT_WITH_MASK);
+    object = (labels == cv::GC_FGD) | (labels == cv::GC_PR_FGD);
+    if (shrink < 1.0) {
+      cv::resize(object, object, roi.size(), 0, 0, cv::INTER_LINEAR);
+      object = (object >= 128) & inside(roi);
+    }
     object.copyTo(mask(roi));
   }
   if (cv::countNonZero(mask) == 0) inside.copyTo(mask);
