@@ -164,7 +164,7 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   object.heightM = top;
   if (!(object.widthM > 1e-3 && object.heightM > 1e-3)) return makeError(who + ": it has no height above the floor");
   const glm::dvec3 bottomLeft = object.footM + s0 * right, bottomRight = object.footM + s1 * right;
-  object.cornersM = {bottomLeft, bottomRight, bottomRight + top * up, bottomLeft + top * up};
+  object.cornersM = {bottomLeft, bottomRight, bottomRight + object.heightM * up, bottomLeft + object.heightM * up};
   // A rectangle reaching through a side wall would be hidden there by the wall (filled
   // behind it): it is brought nearer along the photo's rays, scaled about the eye, until
   // it stands inside the walls. From the photo's camera nothing changes; it stands a
@@ -180,7 +180,6 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
     object.footM = eye + fit * (object.footM - eye);
     object.widthM *= fit;
     object.heightM *= fit;
-    top *= fit;
     object.distanceM = glm::length(glm::dvec3(eye.x - object.footM.x, 0.0, eye.z - object.footM.z));
   }
 
@@ -193,7 +192,7 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   cv::Mat mapX(h, w, CV_32F), mapY(h, w, CV_32F);
   for (int row = 0; row < h; ++row) {
     for (int col = 0; col < w; ++col) {
-      const glm::dvec3 p = object.cornersM[3] + (col + 0.5) / w * object.widthM * right - (row + 0.5) / h * top * up;
+      const glm::dvec3 p = object.cornersM[3] + (col + 0.5) / w * object.widthM * right - (row + 0.5) / h * object.heightM * up;
       const glm::dvec3 q = metrology::projectToPixel(m.camera, m.pose, p);
       const glm::dvec2 px = metrology::distortPixel(m.camera, glm::dvec2(q));
       mapX.at<float>(row, col) = static_cast<float>(px.x);

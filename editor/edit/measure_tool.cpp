@@ -323,22 +323,14 @@ void EditMode::drawMeasurements(app::Shell& shell) {
     if (ImGui::SmallButton("x")) deleteObjectMeasure(shell, i);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("delete it (Ctrl+Z brings it back)");
     ImGui::SameLine();
-    // Its name, typed in place: kept on Enter or when the field is left (one undo step);
-    // the field shows the shot's name whenever it is not being typed into.
-    std::array<char, 64>& buffer = nameBuffers_[i];
-    if (renaming_ != static_cast<int>(i)) std::snprintf(buffer.data(), buffer.size(), "%s", m.name.c_str());
-    ImGui::SetNextItemWidth(110.0f);
-    ImGui::InputTextWithHint("##name", "name", buffer.data(), buffer.size());
+    // Its name, typed in place: kept on Enter or when the field is left (one undo step).
+    const std::optional<std::string> typed =
+        ui::nameField("##name", m.name, nameBuffers_[i], renaming_, static_cast<int>(i), 110.0f);
     rememberWidget(("name " + std::to_string(i + 1)).c_str());
-    if (ImGui::IsItemActivated()) renaming_ = static_cast<int>(i);
-    if (ImGui::IsItemDeactivated()) {
-      renaming_ = -1;
-      const std::string typed = buffer.data();
-      if (ImGui::IsItemDeactivatedAfterEdit() && typed != m.name) {
-        Shot after = shot;
-        after.measurements[i].name = typed;
-        applyEdit(shell, after, "name measurement " + std::to_string(i + 1));
-      }
+    if (typed) {
+      Shot after = shot;
+      after.measurements[i].name = *typed;
+      applyEdit(shell, after, "name measurement " + std::to_string(i + 1));
     }
     ImGui::SameLine();
     std::string line = std::string(metrology::quantityName(m.quantity)) + " " + m.from + "-" + m.to + "  ";

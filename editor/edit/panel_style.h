@@ -5,6 +5,9 @@
 
 #include <imgui.h>
 
+#include <array>
+#include <cstdio>
+#include <optional>
 #include <string>
 
 #include "editor/edit/canvas.h"
@@ -39,6 +42,23 @@ inline void labelOnPlate(ImDrawList* list, ImVec2 at, const std::string& text, I
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
   list->AddRectFilled({at.x - 3, at.y - 1}, {at.x + size.x + 3, at.y + size.y + 1}, IM_COL32(0, 0, 0, 170), 3.0f);
   list->AddText(at, colour, text.c_str());
+}
+
+// A name typed in place (a measurement's, a standing object's): the field shows `current`
+// whenever it is not being typed into (`typingInto`: which of a list's fields is, or -1;
+// this one is `index`), and gives the typed text once, when the field is left or Enter
+// ends an edit that changed it.
+inline std::optional<std::string> nameField(const char* id, const std::string& current, std::array<char, 64>& buffer,
+                                            int& typingInto, int index, float width) {
+  if (typingInto != index) std::snprintf(buffer.data(), buffer.size(), "%s", current.c_str());
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputTextWithHint(id, "name", buffer.data(), buffer.size());
+  if (ImGui::IsItemActivated()) typingInto = index;
+  if (!ImGui::IsItemDeactivated()) return std::nullopt;
+  typingInto = -1;
+  const std::string typed = buffer.data();
+  if (!ImGui::IsItemDeactivatedAfterEdit() || typed == current) return std::nullopt;
+  return typed;
 }
 
 }  // namespace pw::edit::ui

@@ -142,25 +142,18 @@ void EditMode::drawCutouts(app::Shell& shell) {
     if (ImGui::SmallButton("x")) deleteCutout(shell, i);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("paint it flat again (Ctrl+Z brings it back)");
     ImGui::SameLine();
-    std::array<char, 64>& buffer = cutoutNameBuffers_[i];
-    if (renamingCutout_ != static_cast<int>(i)) std::snprintf(buffer.data(), buffer.size(), "%s", cutout.name.c_str());
-    ImGui::SetNextItemWidth(140.0f);
-    ImGui::InputTextWithHint("##cutout", "name", buffer.data(), buffer.size());
+    const std::optional<std::string> typed =
+        ui::nameField("##cutout", cutout.name, cutoutNameBuffers_[i], renamingCutout_, static_cast<int>(i), 140.0f);
     rememberWidget(("cutout " + std::to_string(i + 1)).c_str());
-    if (ImGui::IsItemActivated()) renamingCutout_ = static_cast<int>(i);
-    if (ImGui::IsItemDeactivated()) {
-      renamingCutout_ = -1;
-      const std::string typed = buffer.data();
-      const bool taken = std::any_of(shot.cutouts.begin(), shot.cutouts.end(), [&](const Cutout& c) { return c.name == typed; });
-      if (ImGui::IsItemDeactivatedAfterEdit() && typed != cutout.name) {
-        if (typed.empty() || taken) {
-          shell.showMessage(typed.empty() ? "stand up: a standing object needs a name"
-                                          : "stand up: another standing object is called \"" + typed + "\"");
-        } else {
-          Shot after = shot;
-          after.cutouts[i].name = typed;
-          applyEdit(shell, after, "name " + typed);
-        }
+    if (typed) {
+      const bool taken = std::any_of(shot.cutouts.begin(), shot.cutouts.end(), [&](const Cutout& c) { return c.name == *typed; });
+      if (typed->empty() || taken) {
+        shell.showMessage(typed->empty() ? "stand up: a standing object needs a name"
+                                         : "stand up: another standing object is called \"" + *typed + "\"");
+      } else {
+        Shot after = shot;
+        after.cutouts[i].name = *typed;
+        applyEdit(shell, after, "name " + *typed);
       }
     }
     ImGui::PopID();
