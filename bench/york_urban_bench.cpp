@@ -301,7 +301,7 @@ int main(int argc, char** argv) {
     std::printf("\nfocal length from the EXIF (35 mm equivalent: %.1f px, %+.1f%%), weighed with a second point's:\n", exifPx,
                 100.0 * (exifPx / f - 1.0));
     report("EXIF alone", false, 0.0);
-    report("EXIF + photowalk's point (sigma 0.21)", false, pw::metrology::kVanishingFocalSigmaRelative);
+    report("EXIF + photowalk's point (sigma 0.22)", false, pw::metrology::kVanishingFocalSigmaRelative);
     report("EXIF + Lu's two points (sigma 0.13)", true, 0.13);
   }
 
