@@ -12,7 +12,12 @@
 //   3. opening the photo as a JPEG with corner detection to the first frame with
 //      corners (budget 1 s): Document::open, the photo uploaded (Renderer::addImage) and
 //      one 1280 x 720 frame of it drawn (renderViews); baselines: decoding the JPEG
-//      alone, Document::open alone.
+//      alone, Document::open alone;
+//   4. W's model, built and uploaded;
+//   5. a corner dragged with a person stood up (the random scene TUNE 0's standing shot,
+//      its photo scaled to 4000 px wide): the reduced and the full rebuild with the
+//      cut-outs kept between rebuilds (the worker's modeling::CutOutCache), against cut
+//      again each time (GrabCut and the fill) and against no person.
 // Wall clocks on a shared machine count other people's work too; the thread CPU times
 // do not (on lavapipe the GPU's work is on other threads).
 // Usage: preview_bench [RUNS]   (default 7; PW_DEVICE=cpu for lavapipe)
@@ -35,6 +40,7 @@
 #include "engine/gpu/renderer.h"
 #include "metrology/measure.h"
 #include "modeling/corridor_model.h"
+#include "modeling/shot_file.h"
 #include "tests/support/groundtruth.h"
 
 namespace {
@@ -238,6 +244,43 @@ int main(int argc, char** argv) {
     (void)renderer.removeImage(*image);
   }
 
+  // 5. A person stood up while a corner moves.
+  auto standing = modeling::loadShot(fs::path(PW_GROUNDTRUTH_DIR) / "random" / "seed_00000_standing.json");
+  if (!standing) return fail(standing.message() + " (cmake --build build --target groundtruth)");
+  cv::Mat bigStanding;
+  const int bigWidth = 4000, bigHeight = static_cast<int>(std::lround(4000.0 * standing->image.rows / standing->image.cols));
+  cv::resize(standing->image, bigStanding, cv::Size(bigWidth, bigHeight), 0, 0, cv::INTER_CUBIC);
+  const metrology::Shot standingShot = scaledShot(standing->shot, {bigWidth, bigHeight});
+  metrology::Shot withoutPerson = standingShot;
+  withoutPerson.cutouts.clear();
+  const cv::Mat reducedStanding = reducePhoto(bigStanding, kReducedPhotoSidePx);
+  struct Timed {
+    double reducedMs = 0, fullMs = 0;
+  };
+  const auto dragWith = [&](const metrology::Shot& base, modeling::CutOutCache* cache) -> Result<Timed> {
+    metrology::Shot moved = base;
+    std::vector<double> reducedMs, fullMs;
+    for (int i = 0; i < runs; ++i) {
+      moved.cornersPx[metrology::P5] += glm::dvec2(0.7, -0.3);
+      auto start = std::chrono::steady_clock::now();
+      auto reducedModel = buildPreviewModel(renderer, moved, reducedStanding, PreviewResolution::kReduced, cache);
+      reducedMs.push_back(msSince(start));
+      if (!reducedModel) return reducedModel.error();
+      start = std::chrono::steady_clock::now();
+      auto fullModel = buildPreviewModel(renderer, moved, bigStanding, PreviewResolution::kFull, cache);
+      fullMs.push_back(msSince(start));
+      if (!fullModel) return fullModel.error();
+    }
+    return Timed{median(reducedMs), median(fullMs)};
+  };
+  modeling::CutOutCache cutOuts;
+  (void)buildPreviewModel(renderer, standingShot, reducedStanding, PreviewResolution::kReduced, &cutOuts);  // as the
+  (void)buildPreviewModel(renderer, standingShot, bigStanding, PreviewResolution::kFull, &cutOuts);  // press's build
+  auto kept = dragWith(standingShot, &cutOuts);
+  auto cutAgain = dragWith(standingShot, nullptr);
+  auto noPerson = dragWith(withoutPerson, nullptr);
+  if (!kept || !cutAgain || !noPerson) return fail("the standing shot does not build");
+
   std::printf("preview_bench: %s, a 4000 x 3000 photo (corridor_b scaled), %d runs, medians in ms\n",
               renderer.deviceName().c_str(), runs);
   std::printf("  baseline: measure the corners alone            %8.2f\n", measureMs);
@@ -261,5 +304,10 @@ int main(int argc, char** argv) {
               detected ? "corners detected" : "NO corners detected: a default box");
   std::printf("  open to the first frame with corners           %8.2f  (CPU %.2f all threads; open, upload, one 1280x720 frame; budget 1000)\n",
               median(firstFrameMs), median(firstFrameCpu));
+  std::printf("a person stood up (TUNE 0's standing shot, %d x %d), a corner dragged: reduced / full rebuild\n", bigWidth,
+              bigHeight);
+  std::printf("  baseline: no person                            %8.2f / %8.2f\n", noPerson->reducedMs, noPerson->fullMs);
+  std::printf("  baseline: the person cut out again each time   %8.2f / %8.2f\n", cutAgain->reducedMs, cutAgain->fullMs);
+  std::printf("  the person's cut-outs kept (the worker's cache) %7.2f / %8.2f\n", kept->reducedMs, kept->fullMs);
   return 0;
 }

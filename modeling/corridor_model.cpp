@@ -301,7 +301,7 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
                                         const std::vector<metrology::Cutout>& cutouts, bool attached,
                                         const ModelOptions& options) {
   if (cutouts.empty()) return makeCorridorModel(name, photo, measurement, attached, options);
-  auto stood = standUpObjects(photo, measurement, cutouts);
+  auto stood = standUpObjects(photo, measurement, cutouts, options.cutOutCache);
   if (!stood) return makeError(name + ": " + stood.message());
   auto model = makeCorridorModel(name, stood->behind, measurement, attached, options);
   if (!model) return model;

@@ -36,6 +36,10 @@ struct ModelOptions {
   // texture's detail layer (engine/scene/texture_detail.h: photowalk's renderer shows it
   // only where a view comes closer than the photo was taken); false: `build --no-detail`.
   bool detail = true;
+  // Where the cut-outs of the shot's objects (GrabCut's masks, the fill behind them) are
+  // kept between builds of the same photo's model (the editor's preview as a corner
+  // moves); null: made each time.
+  CutOutCache* cutOutCache = nullptr;
 };
 
 // The part of one surface that has a texture, and the texture.

@@ -226,14 +226,28 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
 
 }  // namespace
 
+const CutOuts& CutOutCache::get(const cv::Mat& photo, const std::vector<std::vector<cv::Point>>& outlines,
+                                const std::function<CutOuts()>& make) {
+  const cv::Scalar sums = cv::sum(photo);
+  for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+    if (it->data == photo.data && it->size == photo.size() && it->sums == sums && it->outlines == outlines) {
+      std::rotate(it, it + 1, entries_.end());  // the most recent last
+      return entries_.back().cut;
+    }
+  }
+  if (entries_.size() >= kEntries) entries_.erase(entries_.begin());
+  entries_.push_back({photo.data, photo.size(), sums, outlines, make()});
+  ++made_;
+  return entries_.back().cut;
+}
+
 Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurement,
-                               const std::vector<metrology::Cutout>& cutouts) {
+                               const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache) {
   if (photo.empty() || photo.type() != CV_8UC3) return makeError("standing objects up needs an 8-bit colour photo");
-  StoodUp out;
-  out.mask = cv::Mat::zeros(photo.size(), CV_8U);
   const cv::Rect frame(0, 0, photo.cols, photo.rows);
+  std::vector<std::vector<cv::Point>> outlines;
   for (const metrology::Cutout& cutout : cutouts) {
-    std::vector<cv::Point> outline;
+    std::vector<cv::Point>& outline = outlines.emplace_back();
     for (const glm::dvec2& p : cutout.outlinePx) {
       if (!(std::isfinite(p.x) && std::isfinite(p.y))) return makeError("cutout \"" + cutout.name + "\": an outline point is not a number");
       outline.emplace_back(static_cast<int>(std::lround(std::clamp(p.x, -1.0, photo.cols + 0.0))),
@@ -243,19 +257,33 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
       return makeError("cutout \"" + cutout.name + "\": its outline is not inside the " + std::to_string(photo.cols) + "x" +
                        std::to_string(photo.rows) + " photo");
     }
-    const cv::Mat mask = objectMask(photo, outline);
-    auto object = standUp(photo, measurement, cutout, mask);
+  }
+  const auto make = [&] {
+    CutOuts cut;
+    cut.mask = cv::Mat::zeros(photo.size(), CV_8U);
+    for (const std::vector<cv::Point>& outline : outlines) {
+      cut.masks.push_back(objectMask(photo, outline));
+      cut.mask |= cut.masks.back();
+    }
+    if (outlines.empty()) {
+      cut.behind = photo;
+    } else {
+      cv::Mat fill;
+      cv::dilate(cut.mask, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
+      cv::inpaint(photo, fill, cut.behind, kFillRadiusPx, cv::INPAINT_TELEA);
+    }
+    return cut;
+  };
+  CutOuts made;
+  const CutOuts& cut = cache ? cache->get(photo, outlines, make) : (made = make());
+  StoodUp out;
+  for (size_t i = 0; i < cutouts.size(); ++i) {
+    auto object = standUp(photo, measurement, cutouts[i], cut.masks[i]);
     if (!object) return object.error();
     out.objects.push_back(std::move(*object));
-    out.mask |= mask;
   }
-  if (out.objects.empty()) {
-    out.behind = photo;
-    return out;
-  }
-  cv::Mat fill;
-  cv::dilate(out.mask, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
-  cv::inpaint(photo, fill, out.behind, kFillRadiusPx, cv::INPAINT_TELEA);
+  out.mask = cut.mask;
+  out.behind = cut.behind;
   return out;
 }
 

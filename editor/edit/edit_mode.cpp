@@ -193,6 +193,7 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
     select(e.key - GLFW_KEY_1);
     return;
   }
+  if (outlining_ && outlineKey(shell, e.key)) return;  // a polygon being clicked: Enter, Backspace, Esc
   const double nudgePx = shift ? kSlowFactor * kNudgePx : kNudgePx;
   switch (e.key) {
     case GLFW_KEY_TAB:
@@ -236,8 +237,7 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
       pickingReference_ = false;
       measuring_ = false;
       measureFrom_.reset();
-      outlining_ = false;
-      outlineFrom_.reset();
+      setOutlining(shell, false);
       break;
     default:
       break;
@@ -246,7 +246,7 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
 
 void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
   if (!e.down) {
-    if (outlineFrom_ && e.button == GLFW_MOUSE_BUTTON_LEFT) (void)outlineButton(shell, false);
+    if (outlining_ && e.button == GLFW_MOUSE_BUTTON_LEFT) (void)outlineButton(shell, false);
     if (drag_ && e.button == GLFW_MOUSE_BUTTON_LEFT) endDrag(true);
     if (panFrom_ && e.button == panButton_) panFrom_.reset();
     return;
@@ -260,7 +260,7 @@ void EditMode::onButton(app::Shell& shell, const app::MouseButtonEvent& e) {
   }
   if (e.button != GLFW_MOUSE_BUTTON_LEFT) return;
   if (measuring_ && measureClick(shell)) return;  // measuring: clicks place points, not grab corners
-  if (outlining_ && outlineButton(shell, true)) return;  // outlining: a drag is a rectangle, not a corner's
+  if (outlining_ && outlineButton(shell, true)) return;  // outlining: a drag is a rectangle, clicks a polygon
   const int corner = handleAt(canvas_, doc_->shot(), cursorPx_, kGrabRadiusPx);
   if (pickingReference_ && pickReference(shell, corner)) return;
   select(corner);

@@ -184,10 +184,13 @@ class EditMode : public app::AppMode {
   void drawMeasureOverlay(ImDrawList* list, const MeasuringNow& now) const;
   void drawMeasurements(app::Shell& shell);
   void addObjectsTrace(app::TraceRow& row) const;
-  // stand_up_tool.cpp: U, a rectangle dragged around an object stands it up in the model
-  // (the shot's cutouts), listed, renamed, deleted, drawn, traced ("cutouts").
+  // stand_up_tool.cpp: U, a rectangle dragged (or a polygon clicked) around an object
+  // stands it up in the model (the shot's cutouts), listed, renamed, deleted, drawn,
+  // traced ("cutouts").
   void setOutlining(app::Shell& shell, bool on);
   bool outlineButton(app::Shell& shell, bool down);  // a press or release while outlining (true: taken)
+  bool outlineKey(app::Shell& shell, int key);        // Enter, Backspace, Esc on a polygon being clicked (true: taken)
+  void standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& outline);
   void deleteCutout(app::Shell& shell, size_t index);
   void drawCutoutOverlay(ImDrawList* list) const;
   void drawCutouts(app::Shell& shell);
@@ -257,7 +260,8 @@ class EditMode : public app::AppMode {
   std::vector<std::array<char, 64>> nameBuffers_;  // the Measurements list's name fields
   int renaming_ = -1;                               // the one being typed into, or -1
   bool outlining_ = false;                          // U: dragging rectangles stands objects up
-  std::optional<glm::dvec2> outlineFrom_;           // the rectangle's first corner (photo pixels), while dragged
+  std::optional<glm::dvec2> outlineFrom_;           // where the button went down (photo pixels), while held
+  std::vector<glm::dvec2> outlinePolygon_;          // a polygon's points clicked so far (photo pixels)
   std::vector<std::array<char, 64>> cutoutNameBuffers_;
   int renamingCutout_ = -1;
   // The Camera panel's widgets as last drawn (window pixels), by name: the trace's

@@ -72,12 +72,15 @@ modeling::ModelOptions previewModelOptions(PreviewResolution resolution) {
 }
 
 Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const metrology::Shot& shot,
-                                       const cv::Mat& photo, PreviewResolution resolution) {
+                                       const cv::Mat& photo, PreviewResolution resolution,
+                                       modeling::CutOutCache* cutOuts) {
   const auto start = std::chrono::steady_clock::now();
   const metrology::Shot inPhoto = scaledShot(shot, {photo.cols, photo.rows});
   auto measurement = metrology::measureCorridor(inPhoto);
   if (!measurement) return measurement.error();
-  auto scene = buildCorridorScene(inPhoto, photo, *measurement, previewModelOptions(resolution));
+  modeling::ModelOptions options = previewModelOptions(resolution);
+  options.cutOutCache = cutOuts;
+  auto scene = buildCorridorScene(inPhoto, photo, *measurement, options);
   if (!scene) return scene.error();
   if (scene->viewpoints.empty()) return makeError("the model has no Photo viewpoint");
   const engine::Camera photoCamera = engine::cameraFromViewpoint(scene->viewpoints.front());
@@ -118,11 +121,11 @@ void PreviewBuilder::build(Request& request, const LatestWorker<Request, Done>::
   };
   const cv::Mat& reduced = reducedFor(request);
   if (request.reducedOnly || request.reducedFirst) {
-    finish(PreviewResolution::kReduced, buildPreviewModel(renderer_, request.shot, reduced, PreviewResolution::kReduced));
+    finish(PreviewResolution::kReduced, buildPreviewModel(renderer_, request.shot, reduced, PreviewResolution::kReduced, &cutOuts_));
     if (superseded()) return;  // a newer shot came meanwhile: build that instead
   }
   if (!request.reducedOnly) {
-    finish(PreviewResolution::kFull, buildPreviewModel(renderer_, request.shot, request.photo, PreviewResolution::kFull));
+    finish(PreviewResolution::kFull, buildPreviewModel(renderer_, request.shot, request.photo, PreviewResolution::kFull, &cutOuts_));
   }
 }
 

@@ -62,10 +62,12 @@ modeling::ModelOptions previewModelOptions(PreviewResolution resolution);
 
 // Measures `shot` (in the pixels of the document's full photo) again in the pixels of
 // `photo` (BGR; the full photo or a reduced one), builds its corridor model with
-// previewModelOptions(resolution) and stages it on `renderer`. Any thread. Errors: the
-// corners cannot be measured or modelled (the message says why), the staging failing.
+// previewModelOptions(resolution) and stages it on `renderer`. Any thread (`cutOuts`,
+// where the objects' cut-outs are kept between builds, one thread at a time). Errors:
+// the corners cannot be measured or modelled (the message says why), the staging failing.
 Result<PreviewModel> buildPreviewModel(const engine::Renderer& renderer, const metrology::Shot& shot,
-                                       const cv::Mat& photo, PreviewResolution resolution);
+                                       const cv::Mat& photo, PreviewResolution resolution,
+                                       modeling::CutOutCache* cutOuts = nullptr);
 
 // One worker thread that builds what is asked last. A request waiting is replaced by a
 // newer one, so a drag's steps never queue up; the worker builds one at a time (a full
@@ -112,6 +114,7 @@ class PreviewBuilder {
   // The worker's own: the reduced photo of the document last built.
   uint64_t reducedDocument_ = 0;
   cv::Mat reduced_;
+  modeling::CutOutCache cutOuts_;  // the worker's: GrabCut and the fill once per photo and outlines
   LatestWorker<Request, Done> worker_;  // last: its thread starts once the rest exists
 };
 

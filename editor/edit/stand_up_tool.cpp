@@ -1,7 +1,8 @@
 // The editor's stand-up tool (issue 25, part 3): U, then a rectangle dragged around an
 // object on the photo (a person, a plant, a bin), down to where it stands on the floor,
-// stands it up in the model as a cut-out (modeling/stand_up.h: GrabCut finds the object
-// inside the rectangle) instead of painting it flat on the floor and the wall behind it.
+// or a polygon clicked around it (the first point again, or Enter, closes it), stands it
+// up in the model as a cut-out (modeling/stand_up.h: GrabCut finds the object inside the
+// outline) instead of painting it flat on the floor and the wall behind it.
 // Each is kept in the shot's "cutouts" (one undo step), drawn on the photo with its
 // name, listed in the panel's "Standing objects" with a name field and a delete button,
 // and traced ("cutouts", "outlining"); the 3D preview and W's model stand it up. A
@@ -28,7 +29,12 @@ using nlohmann::ordered_json;
 
 const ImU32 kCutoutColour = IM_COL32(120, 255, 170, 255);
 const ImU32 kCutoutShadow = IM_COL32(0, 0, 0, 200);
-constexpr double kMinCutoutPx = 4;  // a rectangle at least this wide and high (photo pixels)
+constexpr double kMinCutoutPx = 4;  // an outline at least this wide and high (photo pixels)
+constexpr double kClickPx = 4;      // a press and release nearer than this (window pixels) is a click: a polygon's point
+constexpr double kCloseRadiusPx = 8;  // a click this near a polygon's first point (window pixels) closes it
+const char* const kOutliningHelp =
+    "stand up: drag a rectangle around an object, down to where it stands on the floor, or click a polygon around it; "
+    "Esc: stop";
 
 ImVec2 im(const glm::dvec2& p) { return {float(p.x), float(p.y)}; }
 
@@ -50,11 +56,12 @@ std::array<glm::dvec2, 4> rectangle(glm::dvec2 a, glm::dvec2 b) {
 void EditMode::setOutlining(app::Shell& shell, bool on) {
   outlining_ = on && doc_.has_value();
   outlineFrom_.reset();
+  outlinePolygon_.clear();
   if (outlining_) {
     measuring_ = false;
     measureFrom_.reset();
     pickingReference_ = false;
-    shell.showMessage("stand up: drag a rectangle around an object, down to where it stands on the floor; Esc: stop");
+    shell.showMessage(kOutliningHelp);
   }
 }
 
@@ -68,22 +75,75 @@ bool EditMode::outlineButton(app::Shell& shell, bool down) {
   if (!outlineFrom_) return false;
   const glm::dvec2 from = *outlineFrom_;
   outlineFrom_.reset();
-  const std::array<glm::dvec2, 4> corners = rectangle(from, at);
-  if (corners[2].x - corners[0].x < kMinCutoutPx || corners[2].y - corners[0].y < kMinCutoutPx) {
-    shell.showMessage("stand up: drag a rectangle around the object (this one is too small)");
+  const bool click = glm::length(canvas_.toWindow(at) - canvas_.toWindow(from)) < kClickPx;
+  if (!outlinePolygon_.empty()) {
+    // A polygon being clicked: its first point again closes it, any other adds one.
+    if (outlinePolygon_.size() >= 3 && glm::length(canvas_.toWindow(at) - canvas_.toWindow(outlinePolygon_.front())) <= kCloseRadiusPx) {
+      const std::vector<glm::dvec2> polygon = std::move(outlinePolygon_);
+      outlinePolygon_.clear();
+      standUpOutline(shell, polygon);
+    } else {
+      outlinePolygon_.push_back(at);
+    }
     return true;
+  }
+  if (click) {
+    outlinePolygon_.push_back(at);
+    shell.showMessage("stand up: click around the object, down to its foot; the first point again (or Enter) closes it; "
+                      "Backspace: the last point back; Esc: drop it");
+    return true;
+  }
+  const std::array<glm::dvec2, 4> corners = rectangle(from, at);
+  standUpOutline(shell, {corners.begin(), corners.end()});
+  return true;
+}
+
+bool EditMode::outlineKey(app::Shell& shell, int key) {
+  if (outlinePolygon_.empty()) return false;
+  switch (key) {
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER:
+      if (outlinePolygon_.size() < 3) {
+        shell.showMessage("stand up: a polygon needs three points or more (Esc drops it)");
+      } else {
+        const std::vector<glm::dvec2> polygon = std::move(outlinePolygon_);
+        outlinePolygon_.clear();
+        standUpOutline(shell, polygon);
+      }
+      return true;
+    case GLFW_KEY_BACKSPACE:
+      outlinePolygon_.pop_back();
+      if (outlinePolygon_.empty()) shell.showMessage(kOutliningHelp);
+      return true;
+    case GLFW_KEY_ESCAPE:
+      outlinePolygon_.clear();
+      shell.showMessage(std::string("stand up: polygon dropped; ") + kOutliningHelp);
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Stands the outline (photo pixels) up as a new cutout, one undo step, or says why not
+// and changes nothing.
+void EditMode::standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& outline) {
+  glm::dvec2 lo = outline.front(), hi = outline.front();
+  for (const glm::dvec2& p : outline) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  if (hi.x - lo.x < kMinCutoutPx || hi.y - lo.y < kMinCutoutPx) {
+    shell.showMessage("stand up: outline the whole object (this outline is too small)");
+    return;
   }
   if (!live_.measurement) {
     shell.showMessage("stand up: the corners do not measure yet: " + live_.error);
-    return true;
+    return;
   }
   Shot after = doc_->shot();
-  Cutout cutout{freeCutoutName(after), {corners.begin(), corners.end()}};
+  Cutout cutout{freeCutoutName(after), outline};
   // Stood up now, alone, for its errors (the model stands them all up again).
   auto stood = modeling::standUpObjects(doc_->photo(), *live_.measurement, {cutout});
   if (!stood) {
     shell.showMessage("stand up: " + stood.message());
-    return true;
+    return;
   }
   const modeling::StandingObject& object = stood->objects.front();
   char said[160];
@@ -92,7 +152,6 @@ bool EditMode::outlineButton(app::Shell& shell, bool down) {
   after.cutouts.push_back(std::move(cutout));
   applyEdit(shell, after, "stand up " + after.cutouts.back().name);
   shell.showMessage(said);
-  return true;
 }
 
 void EditMode::deleteCutout(app::Shell& shell, size_t index) {
@@ -114,7 +173,20 @@ void EditMode::drawCutoutOverlay(ImDrawList* list) const {
     for (const glm::dvec2& p : cutout.outlinePx) top = p.y < top.y ? p : top;
     ui::labelOnPlate(list, im(canvas_.toWindow(top) + glm::dvec2(4, -18)), cutout.name, kCutoutColour);
   }
-  if (!outlining_ || !outlineFrom_) return;
+  if (!outlining_) return;
+  if (!outlinePolygon_.empty()) {
+    std::vector<ImVec2> line;
+    for (const glm::dvec2& p : outlinePolygon_) line.push_back(im(canvas_.toWindow(p)));
+    line.push_back(im(cursorPx_));
+    list->AddPolyline(line.data(), static_cast<int>(line.size()), kCutoutShadow, ImDrawFlags_None, 3.0f);
+    list->AddPolyline(line.data(), static_cast<int>(line.size()), (kCutoutColour & 0x00ffffff) | (200u << 24), ImDrawFlags_None, 1.0f);
+    const ImVec2 first = line.front();
+    const bool closes = outlinePolygon_.size() >= 3 && glm::length(cursorPx_ - glm::dvec2(first.x, first.y)) <= kCloseRadiusPx;
+    for (size_t i = 0; i + 1 < line.size(); ++i) list->AddCircleFilled(line[i], 2.5f, kCutoutColour);
+    list->AddCircle(first, float(kCloseRadiusPx), closes ? kCutoutColour : kCutoutShadow, 0, closes ? 2.5f : 1.5f);
+    return;
+  }
+  if (!outlineFrom_) return;
   const std::array<glm::dvec2, 4> corners = rectangle(*outlineFrom_, canvas_.toPhoto(cursorPx_));
   std::array<ImVec2, 4> ring{};
   for (int i = 0; i < 4; ++i) ring[i] = im(canvas_.toWindow(corners[i]));
@@ -125,14 +197,17 @@ void EditMode::drawCutoutOverlay(ImDrawList* list) const {
 void EditMode::drawCutouts(app::Shell& shell) {
   const Shot& shot = doc_->shot();
   if (!ImGui::CollapsingHeader("Standing objects (U)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (ImGui::SmallButton(outlining_ ? "standing up: drag a rectangle (Esc)" : "stand up (U)")) setOutlining(shell, !outlining_);
+  if (ImGui::SmallButton(outlining_ ? "standing up: drag a rectangle or click a polygon (Esc)" : "stand up (U)")) {
+    setOutlining(shell, !outlining_);
+  }
   rememberWidget("stand up");
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("a person, a plant, a bin: drag a rectangle around it, down to its foot;\n"
+    ImGui::SetTooltip("a person, a plant, a bin: drag a rectangle around it, down to its foot,\n"
+                      "or click a polygon around it (the first point again, or Enter, closes it);\n"
                       "the model stands it up on the floor instead of painting it on the wall");
   }
   if (shot.cutouts.empty()) {
-    ImGui::TextDisabled("none: U, then drag a rectangle around an object");
+    ImGui::TextDisabled("none: U, then drag a rectangle or click a polygon around an object");
     return;
   }
   cutoutNameBuffers_.resize(shot.cutouts.size());
@@ -170,9 +245,12 @@ void EditMode::addCutoutsTrace(app::TraceRow& row) const {
     }
   }
   row.add("cutouts", cutouts);
+  ordered_json polygon = ordered_json::array();
+  for (const glm::dvec2& p : outlinePolygon_) polygon.push_back({p.x, p.y});
   row.add("outlining", ordered_json{{"active", outlining_},
                                     {"from_px", outlineFrom_ ? ordered_json::array({outlineFrom_->x, outlineFrom_->y})
-                                                             : ordered_json(nullptr)}});
+                                                             : ordered_json(nullptr)},
+                                    {"polygon_px", polygon}});
 }
 
 }  // namespace pw::edit

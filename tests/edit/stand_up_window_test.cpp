@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <string>
 #include <vector>
@@ -51,19 +52,36 @@ class StandUp : public ::testing::Test {
     if (output) *output = run.output;
     return readTrace(tracePath);
   }
+  // The person in the scene, from its answers: the top of her head and her feet (photo
+  // pixels), a little more than half her width in pixels, her height.
+  struct Person {
+    glm::dvec2 head, feet;
+    double halfWidthPx = 0, heightM = 0;
+    int photoHeightPx = 0;
+  };
+  static std::optional<Person> person() {
+    const nlohmann::json truth = nlohmann::json::parse(std::ifstream(dir_ / "seed_00000.json"));
+    for (const nlohmann::json& o : truth.at("objects")) {
+      if (o.at("kind") != "person") continue;
+      Person p;
+      p.head = {o["keypoints_px"]["head_top"][0], o["keypoints_px"]["head_top"][1]};
+      p.feet = {o["keypoints_px"]["feet"][0], o["keypoints_px"]["feet"][1]};
+      p.heightM = o["size_m"][1];
+      p.halfWidthPx = 0.7 * (p.feet.y - p.head.y) * o["size_m"][0].get<double>() / p.heightM;
+      p.photoHeightPx = truth["image_size"][1];
+      return p;
+    }
+    return std::nullopt;
+  }
   static fs::path dir_;
 };
 fs::path StandUp::dir_;
 
 TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
-  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(dir_ / "seed_00000.json"));
-  nlohmann::json person;
-  for (const nlohmann::json& o : truth.at("objects"))
-    if (o.at("kind") == "person") person = o;
-  ASSERT_FALSE(person.is_null());
-  const glm::dvec2 head(person["keypoints_px"]["head_top"][0], person["keypoints_px"]["head_top"][1]);
-  const glm::dvec2 feet(person["keypoints_px"]["feet"][0], person["keypoints_px"]["feet"][1]);
-  const double halfWidthPx = 0.7 * (feet.y - head.y) * person["size_m"][0].get<double>() / person["size_m"][1].get<double>();
+  const std::optional<Person> her = person();
+  ASSERT_TRUE(her.has_value()) << "no person in the scene's answers";
+  const glm::dvec2 head = her->head, feet = her->feet;
+  const double halfWidthPx = her->halfWidthPx;
   // A person's rough rectangle around her (photo pixels): from above her head to below her feet.
   const glm::dvec2 from(feet.x - halfWidthPx, head.y - 8), to(feet.x + halfWidthPx, feet.y + 10);
 
@@ -71,7 +89,7 @@ TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
   ASSERT_GE(first.size(), 2u);
   const Row& r = first.back();
   const glm::dvec2 a = r.toWindow(from), b = r.toWindow(to);
-  const glm::dvec2 bottom = r.toWindow({feet.x, double(truth["image_size"][1]) - 20.0});
+  const glm::dvec2 bottom = r.toWindow({feet.x, her->photoHeightPx - 20.0});
 
   Script s;
   s.key(3, "U");
@@ -120,7 +138,64 @@ TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
   std::smatch m;
   ASSERT_TRUE(std::regex_search(text, m, std::regex("stood up: person \\([^)]*\\), a cut-out [0-9.]+ m wide and ([0-9.]+) m high")))
       << "no 'stood up' line in the model";
-  EXPECT_NEAR(std::stod(m[1]), person["size_m"][1].get<double>(), 0.03);
+  EXPECT_NEAR(std::stod(m[1]), her->heightM, 0.03);
+}
+
+// A polygon clicked around her (a stray point taken back with Backspace, closed on its
+// first point) stands her up as the rectangle does; a polygon of two points is not
+// closed by Enter, and Esc drops it without leaving the tool.
+TEST_F(StandUp, APolygonClickedAroundAPersonStandsHerUp) {
+  const std::optional<Person> her = person();
+  ASSERT_TRUE(her.has_value()) << "no person in the scene's answers";
+  const glm::dvec2 head = her->head, feet = her->feet;
+  const double halfWidthPx = her->halfWidthPx;
+  // A hexagon around her (photo pixels), as a person clicks it: above her head either
+  // side, out at her shoulders, below her feet either side.
+  const double shoulders = head.y + 0.25 * (feet.y - head.y);
+  const std::vector<glm::dvec2> around = {{feet.x - 0.6 * halfWidthPx, head.y - 10}, {feet.x + 0.6 * halfWidthPx, head.y - 10},
+                                          {feet.x + halfWidthPx, shoulders},        {feet.x + halfWidthPx, feet.y + 10},
+                                          {feet.x - halfWidthPx, feet.y + 10},      {feet.x - halfWidthPx, shoulders}};
+
+  const auto first = edit("polygon_layout", "2 quit\n");
+  ASSERT_GE(first.size(), 2u);
+  const Row& r = first.back();
+  Script s;
+  s.key(3, "U");
+  s.click(5, r.toWindow(around[0])).click(8, r.toWindow(around[1])).click(11, r.toWindow(around[2]));
+  s.click(14, r.toWindow(head + glm::dvec2(200, 0)));  // a stray point ...
+  s.key(17, "BACKSPACE");                               // ... taken back
+  s.click(19, r.toWindow(around[3])).click(22, r.toWindow(around[4])).click(25, r.toWindow(around[5]));
+  s.move(27, r.toWindow(around[0]) + glm::dvec2(3, 2)).at(27, "capture standing_polygon_open.png");
+  s.click(28, r.toWindow(around[0]) + glm::dvec2(3, 2));  // the first point again: closed
+  s.at(32, "capture standing_polygon.png");
+  s.click(34, r.toWindow(head + glm::dvec2(-150, 0))).click(37, r.toWindow(head + glm::dvec2(-100, 40)));
+  s.key(41, "ENTER");   // two points: not closed
+  s.key(43, "ESCAPE");  // dropped, the tool still on
+  s.at(46, "quit");
+  std::string output;
+  const auto rows = edit("stand_up_polygon", s.str(), &output);
+  ASSERT_GE(rows.size(), 46u);
+  const auto outlining = [&](size_t frame) { return rows.at(frame).raw.at("outlining"); };
+  EXPECT_EQ(outlining(7).at("polygon_px").size(), 1u) << outlining(7).dump();
+  EXPECT_EQ(outlining(16).at("polygon_px").size(), 4u) << outlining(16).dump();
+  EXPECT_EQ(outlining(18).at("polygon_px").size(), 3u) << "Backspace takes the last point back";
+  EXPECT_EQ(rows.at(29).raw.at("cutouts").size(), 0u) << "not closed yet";
+  const nlohmann::json cutouts = rows.at(32).raw.at("cutouts");
+  ASSERT_EQ(cutouts.size(), 1u) << cutouts.dump() << output;
+  const nlohmann::json outline = cutouts[0].at("outline_px");
+  ASSERT_EQ(outline.size(), around.size()) << outline.dump();
+  for (size_t i = 0; i < around.size(); ++i) {
+    EXPECT_NEAR(outline[i][0].get<double>(), around[i].x, 1.0 / r.scale + 0.01) << i;
+    EXPECT_NEAR(outline[i][1].get<double>(), around[i].y, 1.0 / r.scale + 0.01) << i;
+  }
+  EXPECT_TRUE(outlining(32).at("polygon_px").empty());
+  EXPECT_NE(output.find("stood up object 1: 1.9"), std::string::npos) << output;  // true 1.945 m
+  EXPECT_EQ(outlining(40).at("polygon_px").size(), 2u);
+  EXPECT_EQ(outlining(42).at("polygon_px").size(), 2u) << "Enter does not close two points";
+  EXPECT_NE(output.find("stand up: a polygon needs three points or more"), std::string::npos) << output;
+  EXPECT_TRUE(outlining(45).at("polygon_px").empty()) << "Esc drops it";
+  EXPECT_TRUE(outlining(45).at("active").get<bool>()) << "and the tool stays on";
+  EXPECT_EQ(rows.at(45).raw.at("cutouts").size(), 1u);
 }
 
 }  // namespace

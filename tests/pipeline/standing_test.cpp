@@ -186,6 +186,47 @@ TEST(StandingObjects, VrmlAndGltfCarryHerWithHerAlpha) {
   }
 }
 
+// The editor's preview rebuilds the model as a corner moves: the cut-outs (GrabCut's
+// masks and the fill) are kept for the same photo and outlines, and what is stood up
+// from them is what is stood up without the cache; new outlines or another photo cut
+// again.
+TEST(StandingObjects, CutOutsAreKeptWhileTheCornersMove) {
+  auto loaded = loadShot(kStandingShot);
+  ASSERT_TRUE(loaded.ok()) << loaded.message();
+  const cv::Mat& photo = loaded->image;
+  const metrology::Shot shot = loaded->shot;
+  CutOutCache cache;
+  metrology::Shot moved = shot;
+  for (int step = 0; step < 3; ++step) {
+    moved.cornersPx[metrology::P5] += glm::dvec2(0.7, -0.3);  // a drag's steps
+    auto measured = metrology::measureCorridor(moved);
+    ASSERT_TRUE(measured.ok()) << measured.message();
+    auto cached = standUpObjects(photo, *measured, moved.cutouts, &cache);
+    auto fresh = standUpObjects(photo, *measured, moved.cutouts);
+    ASSERT_TRUE(cached.ok() && fresh.ok());
+    ASSERT_EQ(cached->objects.size(), 1u);
+    EXPECT_EQ(cached->objects[0].heightM, fresh->objects[0].heightM);
+    EXPECT_EQ(cached->objects[0].image.rgba, fresh->objects[0].image.rgba);
+    EXPECT_EQ(cv::norm(cached->behind, fresh->behind, cv::NORM_INF), 0.0);
+  }
+  EXPECT_EQ(cache.made(), 1) << "GrabCut and the fill once for three corner moves";
+  // Another outline: cut again.
+  metrology::Shot outlined = moved;
+  outlined.cutouts[0].outlinePx[0] += glm::dvec2(-2, 0);
+  auto measured = metrology::measureCorridor(outlined);
+  ASSERT_TRUE(measured.ok());
+  ASSERT_TRUE(standUpObjects(photo, *measured, outlined.cutouts, &cache).ok());
+  EXPECT_EQ(cache.made(), 2);
+  // Another photo of the same size at the same address: cut again.
+  cv::Mat changed = photo.clone();
+  auto first = standUpObjects(changed, *measured, outlined.cutouts, &cache);
+  ASSERT_TRUE(first.ok());
+  EXPECT_EQ(cache.made(), 3);
+  changed(cv::Rect(0, 0, 40, 40)).setTo(cv::Scalar(255, 0, 0));
+  ASSERT_TRUE(standUpObjects(changed, *measured, outlined.cutouts, &cache).ok());
+  EXPECT_EQ(cache.made(), 4) << "the same address and size, other pixels";
+}
+
 TEST(StandingObjects, ShotFilesKeepCutoutsAndBadOnesSayWhy) {
   auto shot = readShotFile(kStandingShot);
   ASSERT_TRUE(shot.ok()) << shot.message();
