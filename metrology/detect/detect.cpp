@@ -771,13 +771,17 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // the far wall's reason is said too.)
   if (!fromProfile && !fromBox) return notFound(d, scatteredLines ? *scatteredLines + "; " + profileReason : profileReason);
   // With scattered lines, a box is believed (as a guess: exit 3) only where its
-  // boundaries run on from its corners and divide surfaces: a photo of something else
-  // (tests/data/detect/camera.png) finds a rectangle among its many edges, but not a
-  // room's box around it.
+  // boundaries and its far wall's top and foot divide surfaces: a photo of something
+  // else (tests/data/detect/camera.png) finds a rectangle among its many edges, but not
+  // a room's box around it. That its boundaries run on from its corners is not asked:
+  // the clutter that scatters the lines hides them (TUNE 0-299: 14 of the 43 clean
+  // scenes with "no corridor" and the box in view stopped there; asked no more, 7 right
+  // answers, 4 near misses and 7 wrong guesses, clean and noisy).
   const auto finish = [&](CorridorDetection out) {
     if (!scatteredLines) return out;
     for (const std::string& why : out.doubts) {
-      if (why.rfind("only ", 0) == 0 || why.find("divides surfaces alike") != std::string::npos) {
+      if (why.find("boundaries divide two surfaces") != std::string::npos ||
+          why.find("divides surfaces alike") != std::string::npos) {
         return notFound(d, *scatteredLines + "; " + why);
       }
     }
