@@ -242,7 +242,7 @@ const CutOuts& CutOutCache::get(const cv::Mat& photo, const std::vector<std::vec
 }
 
 Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurement,
-                               const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache) {
+                               const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache, StandUpParts parts) {
   if (photo.empty() || photo.type() != CV_8UC3) return makeError("standing objects up needs an 8-bit colour photo");
   const cv::Rect frame(0, 0, photo.cols, photo.rows);
   std::vector<std::vector<cv::Point>> outlines;
@@ -267,7 +267,7 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
     }
     if (outlines.empty()) {
       cut.behind = photo;
-    } else {
+    } else if (parts == StandUpParts::kObjectsAndFill) {
       cv::Mat fill;
       cv::dilate(cut.mask, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
       cv::inpaint(photo, fill, cut.behind, kFillRadiusPx, cv::INPAINT_TELEA);
@@ -275,7 +275,8 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
     return cut;
   };
   CutOuts made;
-  const CutOuts& cut = cache ? cache->get(photo, outlines, make) : (made = make());
+  const bool cached = cache && parts == StandUpParts::kObjectsAndFill;
+  const CutOuts& cut = cached ? cache->get(photo, outlines, make) : (made = make());
   StoodUp out;
   for (size_t i = 0; i < cutouts.size(); ++i) {
     auto object = standUp(photo, measurement, cutouts[i], cut.masks[i]);

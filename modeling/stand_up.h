@@ -85,12 +85,19 @@ class CutOutCache {
   int made_ = 0;
 };
 
+// What standUpObjects makes: the objects and the photo filled behind them, or the
+// objects alone (a check of the outlines, as the editor's at an outline's close: the
+// fill costs about a second for a person on a 9-megapixel photo).
+enum class StandUpParts { kObjectsAndFill, kObjectsOnly };
+
 // Stands up each of `cutouts` in the measured corridor seen in `photo` (BGR, 8 bit).
 // Errors name the object: an outline outside the photo, an object GrabCut and the
 // outline leave empty, a lowest pixel above the horizon (it does not stand on the
 // floor the photo shows) or beyond the corridor's floor. `cache`: where the masks and
-// the fill are kept between calls (null: made each time).
+// the fill are kept between calls (null: made each time; kObjectsOnly does not use it,
+// and leaves StoodUp::behind empty).
 Result<StoodUp> standUpObjects(const cv::Mat& photo, const metrology::Measurement& measurement,
-                               const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache = nullptr);
+                               const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache = nullptr,
+                               StandUpParts parts = StandUpParts::kObjectsAndFill);
 
 }  // namespace pw::modeling

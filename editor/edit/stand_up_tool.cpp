@@ -139,8 +139,10 @@ void EditMode::standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& 
   }
   Shot after = doc_->shot();
   Cutout cutout{freeCutoutName(after), outline};
-  // Stood up now, alone, for its errors (the model stands them all up again).
-  auto stood = modeling::standUpObjects(doc_->photo(), *live_.measurement, {cutout});
+  // Stood up now, alone and without the fill behind it, for its errors (the model
+  // stands them all up again, on the preview's worker).
+  auto stood = modeling::standUpObjects(doc_->photo(), *live_.measurement, {cutout}, nullptr,
+                                        modeling::StandUpParts::kObjectsOnly);
   if (!stood) {
     shell.showMessage("stand up: " + stood.message());
     return;

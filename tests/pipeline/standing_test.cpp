@@ -210,6 +210,16 @@ TEST(StandingObjects, CutOutsAreKeptWhileTheCornersMove) {
     EXPECT_EQ(cv::norm(cached->behind, fresh->behind, cv::NORM_INF), 0.0);
   }
   EXPECT_EQ(cache.made(), 1) << "GrabCut and the fill once for three corner moves";
+  // The editor's check when an outline is closed: the objects alone, as they are with
+  // the fill, and no fill.
+  auto measuredNow = metrology::measureCorridor(moved);
+  ASSERT_TRUE(measuredNow.ok());
+  auto alone = standUpObjects(photo, *measuredNow, moved.cutouts, &cache, StandUpParts::kObjectsOnly);
+  auto withFill = standUpObjects(photo, *measuredNow, moved.cutouts);
+  ASSERT_TRUE(alone.ok() && withFill.ok());
+  EXPECT_TRUE(alone->behind.empty());
+  EXPECT_EQ(alone->objects[0].image.rgba, withFill->objects[0].image.rgba);
+  EXPECT_EQ(cache.made(), 1) << "the check does not use the cache";
   // Another outline: cut again.
   metrology::Shot outlined = moved;
   outlined.cutouts[0].outlinePx[0] += glm::dvec2(-2, 0);
