@@ -260,16 +260,16 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
   }
   const auto make = [&] {
     CutOuts cut;
-    cut.mask = cv::Mat::zeros(photo.size(), CV_8U);
+    cv::Mat objects = cv::Mat::zeros(photo.size(), CV_8U);
     for (const std::vector<cv::Point>& outline : outlines) {
       cut.masks.push_back(objectMask(photo, outline));
-      cut.mask |= cut.masks.back();
+      objects |= cut.masks.back();
     }
     if (outlines.empty()) {
       cut.behind = photo;
     } else if (parts == StandUpParts::kObjectsAndFill) {
       cv::Mat fill;
-      cv::dilate(cut.mask, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
+      cv::dilate(objects, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
       cv::inpaint(photo, fill, cut.behind, kFillRadiusPx, cv::INPAINT_TELEA);
     }
     return cut;
@@ -283,7 +283,6 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
     if (!object) return object.error();
     out.objects.push_back(std::move(*object));
   }
-  out.mask = cut.mask;
   out.behind = cut.behind;
   return out;
 }

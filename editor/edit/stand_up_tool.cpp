@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "editor/app/shell.h"
 #include "editor/edit/edit_mode.h"
@@ -75,19 +76,16 @@ bool EditMode::outlineButton(app::Shell& shell, bool down) {
   if (!outlineFrom_) return false;
   const glm::dvec2 from = *outlineFrom_;
   outlineFrom_.reset();
-  const bool click = glm::length(canvas_.toWindow(at) - canvas_.toWindow(from)) < kClickPx;
   if (!outlinePolygon_.empty()) {
     // A polygon being clicked: its first point again closes it, any other adds one.
     if (outlinePolygon_.size() >= 3 && glm::length(canvas_.toWindow(at) - canvas_.toWindow(outlinePolygon_.front())) <= kCloseRadiusPx) {
-      const std::vector<glm::dvec2> polygon = std::move(outlinePolygon_);
-      outlinePolygon_.clear();
-      standUpOutline(shell, polygon);
+      standUpOutline(shell, std::exchange(outlinePolygon_, {}));
     } else {
       outlinePolygon_.push_back(at);
     }
     return true;
   }
-  if (click) {
+  if (glm::length(canvas_.toWindow(at) - canvas_.toWindow(from)) < kClickPx) {  // a click: a polygon's first point
     outlinePolygon_.push_back(at);
     shell.showMessage("stand up: click around the object, down to its foot; the first point again (or Enter) closes it; "
                       "Backspace: the last point back; Esc: drop it");
@@ -106,9 +104,7 @@ bool EditMode::outlineKey(app::Shell& shell, int key) {
       if (outlinePolygon_.size() < 3) {
         shell.showMessage("stand up: a polygon needs three points or more (Esc drops it)");
       } else {
-        const std::vector<glm::dvec2> polygon = std::move(outlinePolygon_);
-        outlinePolygon_.clear();
-        standUpOutline(shell, polygon);
+        standUpOutline(shell, std::exchange(outlinePolygon_, {}));
       }
       return true;
     case GLFW_KEY_BACKSPACE:
