@@ -13,7 +13,10 @@ namespace {
 
 constexpr double kStepPx = 0.5;         // scan step in t
 constexpr double kMinSideCoverage = 0.3;
-constexpr double kMinFarWallScore = 1.2;
+// The far wall's score (its sides' edge coverage plus how much more the boundaries run
+// on beyond its corners than inside them) at its least; below kClearFarWallScore
+// (cross_sections.h) the answer is a guess.
+constexpr double kMinFarWallScore = 0.8;
 constexpr double kMarkedMinSide = 0.6;
 constexpr double kMarkedMinMean = 0.75;
 

@@ -60,6 +60,10 @@ struct CrossSectionMatch {
 // door frame nearer the camera has edges on its sides too, but the boundaries run
 // on inside it. The error says why none was found.
 Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family);
+// A far wall scored below this (down to findFarWall's least, 0.8) is found, but thinly:
+// an answer through it is a guess (the random TUNE scenes 0-299: with 1.2 as the least,
+// 3 more were "no corridor" with the box in view that 0.8 gets right, none lost).
+inline constexpr double kClearFarWallScore = 1.2;
 
 // The far wall where a person (roughly) put it: the best section within `reach` of
 // t = `tCentre`, scored as findFarWall scores but over its three best-edged sides (one

@@ -942,13 +942,23 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     const CrossSectionFamily family(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
                                     *boundaries);
     auto farWall = findFarWall(work, family);
+    const bool thin = farWall && farWall->score < kClearFarWallScore;
+    const std::string thinly = thin ? "the far wall's sides and the boundaries beyond it are seen thinly (score " +
+                                          std::to_string(farWall->score).substr(0, 4) + ")"
+                                    : std::string();
     if (!farWall) {
       profileReason = farWall.message();
+    } else if (thin && scatteredLines) {
+      // Scattered lines and a thin far wall together are not taken (York Urban's
+      // training half: a pole in a subway car, a stairway outdoors; TUNE 0-299: 4 of
+      // 6 such answers wrong, the other 2 found right by the room's box fit as well).
+      profileReason = "no far wall: " + thinly;
     } else if (auto done = completeFromFarWall(search, d, farWall->corners, farWall->t); !done) {
       profileReason = done.message();
       profileFar = std::pair{farWall->corners, farWall->t};
     } else {
       fromProfile = std::move(*done);
+      if (thin) doubt(fromProfile->detection, thinly);
     }
   }
   if (fromProfile && looseVanishingPoint) doubt(fromProfile->detection, *looseVanishingPoint);
