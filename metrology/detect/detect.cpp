@@ -77,7 +77,10 @@ constexpr double kFootStepWeight = 0.25;
 // A skirting board under a guess's far-wall foot (skirtingBelow): the wall above runs
 // on within this of one colour, and the board's band differs from it by more (grey
 // levels, about an edge's step); a band under this many working pixels is the found
-// edge's own blur (TUNE seeds 0-299: at 2 px it moved 6 right answers off, at 3 none);
+// edge's own blur (TUNE seeds 0-299: at 2 px it moved 6 right answers off, at 3 none),
+// and a place whose band is that narrow shows none (TUNE: counted as disagreeing, it
+// kept 1 clean and 2 noisy feet on a board's top; taking the far wall's own foot alone
+// where neither boundary shows a board gained 5 but lost 12);
 // the places that show a board agree within kSkirtingAgreePx (two of three agreeing
 // took the fixed scene clutter_1's darker first row of floor tiles for one).
 constexpr double kSkirtingUniformGrey = 12.0;
@@ -724,6 +727,9 @@ std::optional<double> skirtingBelow(const WorkingImage& work, glm::dvec2 vp, glm
     glm::dvec3 beyond(0);
     for (double h = edge + 2; h <= edge + 1 + n; h += 1.0) beyond += at(h);
     if (glm::length(band - beyond / static_cast<double>(n)) < kSkirtingUniformGrey) continue;
+    // A band narrower than the least is the found edge's own blur here: this place
+    // shows no board (so it does not vote against the others).
+    if (edge - h0 < kMinSkirtingPx) continue;
     moves.push_back(edge - h0);
   }
   // Where two or three places show a board, they agree (it runs all around).
