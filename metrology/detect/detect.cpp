@@ -86,6 +86,7 @@ constexpr double kFootStepWeight = 0.25;
 constexpr double kSkirtingUniformGrey = 12.0;
 constexpr double kMinSkirtingPx = 3.0;
 constexpr double kSkirtingAgreePx = 1.5;
+constexpr double kMirrorFootShare = 0.5;
 // A camera held 1-2 m above the floor of a corridor 2.2-6 m high sees the horizon
 // (through the corridor's vanishing point) cross the far wall between these shares of
 // its height, from its foot up (the random scenes: 0.17-0.82).
@@ -791,6 +792,40 @@ void belowSkirting(CorridorDetection& d, const WorkingImage& work, glm::dvec2 vp
   doubt(d, "the far wall's foot was taken below a skirting board, at the board's foot");
 }
 
+// A far wall found together with its reflection in a glossy floor: the walls mirror
+// about their foot, so the box drawn from the ceiling's lines down to their reflections
+// has its foot at the reflection of its top, and the true foot half way down (between
+// a side wall's ceiling line and its reflection, its floor line lies half way, with the
+// vertical's vanishing point far). Two things tell it from a true box. The camera's
+// horizon crosses a reflected box above its middle, from its foot (the camera's height
+// plus the wall's, over twice the wall's), and a true one at the camera's height over
+// the wall's (the random scenes: 0.17-0.82; 15 of the 16 reflected boxes of TUNE 0-599:
+// 0.61-0.82, the 3 right answers there that showed the next sign: 0.25-0.30). And the
+// foot's line half way up divides surfaces, as do both lines through its ends from the
+// corridor's vanishing point out to the photo's border (the floor's true boundaries),
+// each over kMirrorFootShare of their length. Returns the far wall with its foot there
+// (working pixels), or nullopt.
+std::optional<Quad> reflectedFoot(const WorkingImage& work, glm::dvec2 vp, glm::dvec3 horizontal, glm::dvec3 vertical,
+                                  const Quad& far) {
+  const glm::dvec2 down = directionTowards(vertical, far[0], {0, 1});
+  const double height = glm::dot(far[2] - far[0], down);
+  if (!(height > 20)) return std::nullopt;
+  const auto horizon = intersect(lineThrough(homogeneous(vp), horizontal), lineThrough(homogeneous(far[0]), vertical));
+  if (!horizon || !(glm::dot(far[2] - *horizon, down) > 0.5 * height)) return std::nullopt;
+  const glm::dvec2 p3 = far[0] + 0.5 * height * down;
+  const auto p4 = intersect(lineThrough(homogeneous(p3), horizontal), lineThrough(homogeneous(far[1]), vertical));
+  if (!p4 || surfaceStep(work, p3, *p4).share < kMirrorFootShare) return std::nullopt;
+  const double shortSide = std::min(work.bgr.cols, work.bgr.rows);
+  for (const glm::dvec2& corner : {p3, *p4}) {
+    const glm::dvec2 out = glm::normalize(corner - vp);
+    const double length = std::min(0.3 * shortSide, distanceToBorder(work, corner, out) - 8);
+    if (!(length > 10) || surfaceStep(work, corner + 3.0 * out, corner + length * out).share < kMirrorFootShare) {
+      return std::nullopt;
+    }
+  }
+  return Quad{far[0], far[1], p3, *p4};
+}
+
 // Where four image lines meet, in the least-squares sense (pixels); nullopt when they
 // are nearly parallel.
 std::optional<glm::dvec2> meetingPoint(const std::array<glm::dvec3, 4>& lines) {
@@ -947,6 +982,22 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // boundaries (the clean corridors), then, when that fails or leaves doubts, from the
   // room's box fitted to all the edges (clutter hides boundaries).
   const FarWallSearch search{photo, work, options, vp, work.toWorking(vp)};
+  // A far wall that reaches down into its reflection (reflectedFoot): completed again
+  // with its foot half way down; the answer a guess.
+  const auto unreflected = [&](const Candidate& c) -> std::optional<Candidate> {
+    Quad farWork;
+    for (int k = 0; k < 4; ++k) farWork[k] = work.toWorking(c.detection.corners[k].px);
+    const auto foot = reflectedFoot(work, search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), farWork);
+    if (!foot) return std::nullopt;
+    auto done = completeFromFarWall(search, d, *foot, glm::length((*foot)[2] - search.vpWork), std::nullopt, true);
+    // (The full-resolution fit may find the foot where it was: then it stands.)
+    if (!done || glm::length(work.toWorking(done->detection.corners[P3].px) - farWork[2]) <
+                     0.25 * glm::length(farWork[2] - farWork[0])) {
+      return std::nullopt;
+    }
+    doubt(done->detection, "the far wall found reached down into its reflection in a glossy floor: its foot was taken half way down");
+    return std::move(*done);
+  };
   if (options.hintPx) {
     CorridorDetection fitted = fromHint(search, d, *options.hintPx);
     if (looseVanishingPoint) doubt(fitted, *looseVanishingPoint);
@@ -989,6 +1040,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   }
   if (fromProfile && looseVanishingPoint) doubt(fromProfile->detection, *looseVanishingPoint);
   if (fromProfile && fromProfile->detection.confident) {
+    if (auto mirrored = unreflected(*fromProfile)) return mirrored->detection;
     belowSkirting(fromProfile->detection, work, search.vpWork, photo.size());
     return fromProfile->detection;
   }
@@ -1054,7 +1106,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   };
   const auto finish = [&](const Candidate& found) {
     if (scatteredLines && found.surfacesAlike) return notFound(d, *scatteredLines + "; " + *found.surfacesAlike);
-    std::optional<Candidate> better = refooted(found);
+    std::optional<Candidate> better = unreflected(found);
+    if (!better) better = refooted(found);
     // (A foot that shows no room where the one found did is not taken.)
     if (better && scatteredLines && better->surfacesAlike) better.reset();
     CorridorDetection out = (better ? *better : found).detection;
