@@ -86,6 +86,8 @@ constexpr double kFootStepWeight = 0.25;
 constexpr double kSkirtingUniformGrey = 12.0;
 constexpr double kMinSkirtingPx = 3.0;
 constexpr double kSkirtingAgreePx = 1.5;
+// A far wall reaching into its reflection (reflectedFoot): the share of the floor's lines
+// half way down that must divide surfaces.
 constexpr double kMirrorFootShare = 0.5;
 // A camera held 1-2 m above the floor of a corridor 2.2-6 m high sees the horizon
 // (through the corridor's vanishing point) cross the far wall between these shares of
@@ -995,6 +997,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
                      0.25 * glm::length(farWork[2] - farWork[0])) {
       return std::nullopt;
     }
+    if (looseVanishingPoint) doubt(done->detection, *looseVanishingPoint);
     doubt(done->detection, "the far wall found reached down into its reflection in a glossy floor: its foot was taken half way down");
     return std::move(*done);
   };
