@@ -78,11 +78,11 @@ constexpr double kFootStepWeight = 0.25;
 // on within this of one colour, and the board's band differs from it by more (grey
 // levels, about an edge's step); a band under this many working pixels is the found
 // edge's own blur (TUNE seeds 0-299: at 2 px it moved 6 right answers off, at 3 none),
-// and a place whose band is that narrow shows none (TUNE: counted as disagreeing, it
-// kept 1 clean and 2 noisy feet on a board's top; taking the far wall's own foot alone
-// where neither boundary shows a board gained 5 but lost 12);
-// the places that show a board agree within kSkirtingAgreePx (two of three agreeing
-// took the fixed scene clutter_1's darker first row of floor tiles for one).
+// and a place whose band is that narrow shows none (counted as disagreeing, it kept 1
+// clean and 2 noisy TUNE feet on a board's top). The places that show a board agree
+// within kSkirtingAgreePx (two of three agreeing took the fixed scene clutter_1's darker
+// first row of floor tiles for one; the far wall's own foot alone, where neither
+// boundary shows a board, gained 5 TUNE answers but lost 12).
 constexpr double kSkirtingUniformGrey = 12.0;
 constexpr double kMinSkirtingPx = 3.0;
 constexpr double kSkirtingAgreePx = 1.5;
@@ -649,6 +649,25 @@ std::optional<FootSearch> bestFoot(const WorkingImage& work, glm::dvec2 vp, glm:
   return best;
 }
 
+// The far wall's corners P1..P4 in working pixels.
+Quad farInWorking(const CorridorDetection& d, const WorkingImage& work) {
+  Quad far;
+  for (int k = 0; k < 4; ++k) far[k] = work.toWorking(d.corners[k].px);
+  return far;
+}
+
+// The nearest cross-section whose four corners lie inside the photo (1% of its short side
+// from the border), along the boundaries from the corridor's vanishing point through
+// the far corners `far` (P1..P4, photo pixels): its corners in the order P7, P8, P5, P6.
+std::optional<Quad> nearestSectionInside(const CorridorDetection& d, const Quad& far, cv::Size size) {
+  const glm::dvec2 vp = d.corridor.pixel();
+  RecedingBoundaries rays;
+  const std::array<glm::dvec2, kBoundaryCount> farCorner = {far[P3], far[P4], far[P1], far[P2]};  // floor-left ... ceiling-right
+  for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = std::atan2(farCorner[b].y - vp.y, farCorner[b].x - vp.x);
+  const CrossSectionFamily family(vp, d.horizontal.point, d.vertical.point, rays);
+  return family.at(family.largestInside(size, 0.01 * std::min(size.width, size.height)));
+}
+
 // A skirting board below the far wall's foot found: the foot found is the board's top
 // when the wall above it runs on plain, and a band unlike both the wall above and the
 // floor beyond lies below it, ending in an edge within 8% of the far wall's height (a
@@ -752,14 +771,13 @@ std::optional<double> skirtingShift(const std::vector<double>& moves) {
 // scenes 0-299 (clean) all 6 sure answers with their foot on a board's top (2-4 px above
 // the truth, one of them wrong by the median of its corners) showed one, as did 4 sure
 // answers with the foot right; moving the foot where only one place shows a board lost
-// 18 right answers. A guess's P3 and
-// P4 move down onto the board's foot where the places agree (skirtingShift), and P5..P8
-// along the boundaries through them at the nearest depth inside the photo, as before.
+// 18 right answers. A guess's P3 and P4 move down onto the board's foot where the places
+// agree (skirtingShift), and P5..P8 along the boundaries through them at the nearest
+// depth inside the photo, as before.
 // (Fitting the far wall again would put the foot back on the board's top: its top and
 // foot take their innermost edge.)
 void belowSkirting(CorridorDetection& d, const WorkingImage& work, glm::dvec2 vpWork, cv::Size size) {
-  Quad farWork;
-  for (int k = 0; k < 4; ++k) farWork[k] = work.toWorking(d.corners[k].px);
+  const Quad farWork = farInWorking(d, work);
   const glm::dvec3 horizontal = work.toWorking(d.horizontal.point), vertical = work.toWorking(d.vertical.point);
   const std::vector<double> moves = skirtingBelow(work, vpWork, horizontal, vertical, farWork);
   if (d.confident) {
@@ -771,7 +789,7 @@ void belowSkirting(CorridorDetection& d, const WorkingImage& work, glm::dvec2 vp
     return;
   }
   const std::optional<double> shift = skirtingShift(moves);
-  if (!shift || *shift < kMinSkirtingPx) return;
+  if (!shift) return;
   const glm::dvec2 p3 = farWork[2] + *shift * directionTowards(vertical, farWork[0], {0, 1});
   const auto p4 = intersect(lineThrough(homogeneous(p3), horizontal), lineThrough(homogeneous(farWork[1]), vertical));
   if (!p4) return;
@@ -779,12 +797,7 @@ void belowSkirting(CorridorDetection& d, const WorkingImage& work, glm::dvec2 vp
   for (int k = 0; k < kCornerCount; ++k) corners[k] = d.corners[k].px;
   corners[P3] = work.toFull(p3), corners[P4] = work.toFull(*p4);
   if (d.nearDepth == NearDepth::kImageEdge) {
-    const glm::dvec2 vp = d.corridor.pixel();
-    RecedingBoundaries rays;
-    const std::array<glm::dvec2, kBoundaryCount> farCorner = {corners[P3], corners[P4], corners[P1], corners[P2]};
-    for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = std::atan2(farCorner[b].y - vp.y, farCorner[b].x - vp.x);
-    const CrossSectionFamily family(vp, d.horizontal.point, d.vertical.point, rays);
-    const auto near = family.at(family.largestInside(size, 0.01 * std::min(size.width, size.height)));
+    const auto near = nearestSectionInside(d, {corners[P1], corners[P2], corners[P3], corners[P4]}, size);
     if (!near) return;
     corners[P7] = (*near)[0], corners[P8] = (*near)[1], corners[P5] = (*near)[2], corners[P6] = (*near)[3];
   }
@@ -987,8 +1000,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // A far wall that reaches down into its reflection (reflectedFoot): completed again
   // with its foot half way down; the answer a guess.
   const auto unreflected = [&](const Candidate& c) -> std::optional<Candidate> {
-    Quad farWork;
-    for (int k = 0; k < 4; ++k) farWork[k] = work.toWorking(c.detection.corners[k].px);
+    const Quad farWork = farInWorking(c.detection, work);
     const auto foot = reflectedFoot(work, search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), farWork);
     if (!foot) return std::nullopt;
     auto done = completeFromFarWall(search, d, *foot, glm::length((*foot)[2] - search.vpWork), std::nullopt, true);
@@ -1094,8 +1106,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // the answer stays a guess.
   const auto refooted = [&](const Candidate& c) -> std::optional<Candidate> {
     if (c.detection.confident) return std::nullopt;
-    Quad farWork;
-    for (int k = 0; k < 4; ++k) farWork[k] = work.toWorking(c.detection.corners[k].px);
+    Quad farWork = farInWorking(c.detection, work);
     const auto foot = bestFoot(work, search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), farWork);
     if (!foot || glm::length(foot->left - farWork[2]) < kFootMovedPx || !(foot->score > kFootGain * foot->currentScore)) {
       return std::nullopt;
@@ -1196,11 +1207,7 @@ std::optional<std::array<glm::dvec2, 8>> boxAlongVanishingPoints(const CorridorD
   const auto p1 = intersect(top, left), p2 = intersect(top, right), p3 = intersect(bottom, left),
              p4 = intersect(bottom, right);
   if (!p1 || !p2 || !p3 || !p4) return std::nullopt;
-  RecedingBoundaries rays;
-  const std::array<glm::dvec2, kBoundaryCount> farCorner = {*p3, *p4, *p1, *p2};  // floor-left ... ceiling-right
-  for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = std::atan2(farCorner[b].y - vp.y, farCorner[b].x - vp.x);
-  const CrossSectionFamily family(vp, d.horizontal.point, d.vertical.point, rays);
-  const auto near = family.at(family.largestInside(size, 0.01 * std::min(size.width, size.height)));
+  const auto near = nearestSectionInside(d, {*p1, *p2, *p3, *p4}, size);
   if (!near) return std::nullopt;
   std::array<glm::dvec2, 8> box{};
   box[P1] = *p1, box[P2] = *p2, box[P3] = *p3, box[P4] = *p4;
