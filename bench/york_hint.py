@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """`detect --hint` on real photos (issue 22 part 5): each careful box of
-bench/data/york_careful_boxes.json (York Urban training half, ../shared/real-photos)
-with every corner moved 15 px in a random direction, fitted back; prints per trial the
-worst far-wall corner's and the worst near corner's distance from the careful box.
-usage: york_hint.py PHOTOWALK [--trials N] [--dataset DIR]"""
+bench/data/york_careful_boxes.json (York Urban training half, ../shared/real-photos;
+built from the database's hand-labelled segments by bench/york_careful_boxes.py) with
+every corner moved 15 px in a random direction, fitted back; prints per trial the
+worst far-wall corner's and the worst near corner's distance from the careful box, and
+per photo and in all how many come back within 2 px.
+usage: york_hint.py PHOTOWALK [--trials N] [--dataset DIR] [--boxes FILE]"""
 import argparse, json, math, os, random, statistics, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -13,12 +15,13 @@ def main():
     ap.add_argument("photowalk")
     ap.add_argument("--trials", type=int, default=20)
     ap.add_argument("--dataset", default=os.path.join(HERE, "..", "..", "shared", "real-photos", "york-urban-train"))
+    ap.add_argument("--boxes", default=os.path.join(HERE, "data", "york_careful_boxes.json"))
     a = ap.parse_args()
     if not os.path.isdir(a.dataset):
         sys.exit("error: %s: no York Urban dataset there (--dataset DIR)" % a.dataset)
     cam = json.load(open(os.path.join(a.dataset, "camera.json")))
-    boxes = json.load(open(os.path.join(HERE, "data", "york_careful_boxes.json")))["boxes"]
-    far_all, near_all = [], []
+    boxes = json.load(open(a.boxes))["boxes"]
+    far_all, near_all, per_photo = [], [], {}
     with tempfile.TemporaryDirectory() as d:
         for name, careful in sorted(boxes.items()):
             rng = random.Random(name)
@@ -39,7 +42,11 @@ def main():
                 err = {k: math.dist(fit[k], careful[k]) for k in careful}
                 far = max(err["P%d" % i] for i in range(1, 5)); near = max(err["P%d" % i] for i in range(5, 9))
                 far_all.append(far); near_all.append(near)
+                per_photo.setdefault(name, []).append((far, near))
                 print("%s trial %2d exit %d  far worst %.2f px  near worst %.2f px" % (name, trial, r.returncode, far, near))
+    for name, fits in sorted(per_photo.items()):
+        print("%s: far-wall corners within 2 px in %d of %d, near corners in %d" % (
+            name, sum(f <= 2 for f, _ in fits), len(fits), sum(n <= 2 for _, n in fits)))
     print("%d fits: far-wall corners within 2 px in %d (median worst %.2f px); near corners within 2 px in %d (median worst %.2f px)" % (
         len(far_all), sum(x <= 2 for x in far_all), statistics.median(far_all), sum(x <= 2 for x in near_all),
         statistics.median(near_all)))

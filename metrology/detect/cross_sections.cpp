@@ -18,6 +18,9 @@ constexpr double kMinSideCoverage = 0.3;
 // (cross_sections.h) the answer is a guess.
 constexpr double kMinFarWallScore = 0.8;
 constexpr double kMarkedMinSide = 0.6;
+// Below this sine (about 11.5 degrees) two lines cross too glancingly to place a corner
+// by; the cross-section takes it another way round.
+constexpr double kGlancingSine = 0.2;
 constexpr double kMarkedMinMean = 0.75;
 
 // Whether an edge runs along `normal`'s perpendicular at p: the strongest gradient
@@ -85,20 +88,40 @@ CrossSectionFamily::CrossSectionFamily(glm::dvec2 vanishingPoint, glm::dvec3 hor
 
 std::optional<Quad> CrossSectionFamily::at(double t) const {
   const glm::dvec3 vp = homogeneous(vp_);
-  const auto onRay = [&](int boundary, glm::dvec3 line) -> std::optional<glm::dvec2> {
+  // The corner on `boundary`'s ray where the line from `from` towards `towards` (the
+  // horizontal or vertical point) crosses it, with how well the two cross (the sine of
+  // their angle: a crossing at a glancing angle moves far with a small error in either).
+  struct Crossing {
+    glm::dvec2 p;
+    double sine;
+  };
+  const auto cross = [&](int boundary, glm::dvec2 from, glm::dvec3 towards) -> std::optional<Crossing> {
     const glm::dvec2 dir = rayDirection_[boundary];
-    auto p = intersect(glm::cross(vp, homogeneous(vp_ + dir)), line);
+    auto p = intersect(glm::cross(vp, homogeneous(vp_ + dir)), glm::cross(homogeneous(from), towards));
     if (!p || glm::dot(*p - vp_, dir) <= 0) return std::nullopt;
-    return p;
+    return Crossing{*p, std::abs(cross2(dir, directionTowards(towards, from)))};
   };
   const glm::dvec2 bottomLeft = vp_ + t * rayDirection_[kFloorLeft];
-  auto bottomRight = onRay(kFloorRight, glm::cross(homogeneous(bottomLeft), horizontal_));
-  auto topLeft = onRay(kCeilingLeft, glm::cross(homogeneous(bottomLeft), vertical_));
-  if (!bottomRight || !topLeft) return std::nullopt;
-  auto topRightA = onRay(kCeilingRight, glm::cross(homogeneous(*topLeft), horizontal_));
-  auto topRightB = onRay(kCeilingRight, glm::cross(homogeneous(*bottomRight), vertical_));
+  const auto bottomRight = cross(kFloorRight, bottomLeft, horizontal_);
+  auto topLeft = cross(kCeilingLeft, bottomLeft, vertical_);
+  if (!bottomRight) return std::nullopt;
+  // A left side seen nearly along its boundaries (the camera close to the left wall, the
+  // vanishing point on the far wall's left side): the top-left corner is where the top
+  // through the top-right corner crosses the ceiling's ray, round the right side.
+  if (!topLeft || topLeft->sine < kGlancingSine) {
+    const auto right = cross(kCeilingRight, bottomRight->p, vertical_);
+    const auto round = right ? cross(kCeilingLeft, right->p, horizontal_) : std::nullopt;
+    if (round && std::min(right->sine, round->sine) > (topLeft ? topLeft->sine : 0.0)) topLeft = round;
+  }
+  if (!topLeft) return std::nullopt;
+  auto topRightA = cross(kCeilingRight, topLeft->p, horizontal_);
+  auto topRightB = cross(kCeilingRight, bottomRight->p, vertical_);
   if (!topRightA || !topRightB) return std::nullopt;
-  return Quad{*topLeft, 0.5 * (*topRightA + *topRightB), bottomLeft, *bottomRight};
+  glm::dvec2 topRight = 0.5 * (topRightA->p + topRightB->p);
+  if (std::min(topRightA->sine, topRightB->sine) < kGlancingSine) {
+    topRight = topRightA->sine > topRightB->sine ? topRightA->p : topRightB->p;
+  }
+  return Quad{topLeft->p, topRight, bottomLeft, bottomRight->p};
 }
 
 double CrossSectionFamily::largestInside(cv::Size size, double marginPx) const {

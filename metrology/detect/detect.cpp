@@ -841,21 +841,6 @@ std::optional<Quad> reflectedFoot(const WorkingImage& work, glm::dvec2 vp, glm::
   return Quad{far[0], far[1], p3, *p4};
 }
 
-// Where four image lines meet, in the least-squares sense (pixels); nullopt when they
-// are nearly parallel.
-std::optional<glm::dvec2> meetingPoint(const std::array<glm::dvec3, 4>& lines) {
-  cv::Matx22d a = cv::Matx22d::zeros();
-  cv::Vec2d b(0, 0);
-  for (const glm::dvec3& l : lines) {
-    a(0, 0) += l.x * l.x, a(0, 1) += l.x * l.y, a(1, 1) += l.y * l.y;
-    b(0) -= l.x * l.z, b(1) -= l.y * l.z;
-  }
-  a(1, 0) = a(0, 1);
-  if (std::abs(cv::determinant(a)) < 1e-9) return std::nullopt;
-  const cv::Vec2d p = a.inv() * b;
-  return glm::dvec2(p(0), p(1));
-}
-
 // The box a person placed roughly (`hint`, pinhole pixels), fitted to the photo: each
 // boundary put on the edge nearest the person's line (from the vanishing point to the
 // near corner, the longer lever), the far wall at the best-edged section within reach
@@ -873,13 +858,18 @@ CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const st
     doubt(out, why);
     return out;
   };
-  std::array<glm::dvec3, 4> lines{};
-  for (int b = 0; b < kBoundaryCount; ++b) lines[b] = lineThrough(hint[kFarOf[b]], hint[kNearOf[b]]);
-  const std::optional<glm::dvec2> given = meetingPoint(lines);
-  if (!given) return asGiven(d, "the corners' receding lines do not meet");
-  if (glm::length(*given - s.vp) > std::max(2.0 * reach, 0.03 * std::hypot(work.bgr.cols, work.bgr.rows) / work.scale)) {
-    return asGiven(d, "the corners' receding lines meet " + std::to_string(std::lround(glm::length(*given - s.vp))) +
-                          " px from the photo's vanishing point");
+  // Each far corner within reach of the ray from the photo's vanishing point through its
+  // near corner, as a box placed within reach of the photo's corners is. (Not where the
+  // four receding lines meet: a boundary seen nearly end-on, its two corners a few
+  // dozen pixels apart, swings by tens of degrees with a 15 px slip of either.)
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    const glm::dvec2 far = hint[kFarOf[b]], out = hint[kNearOf[b]] - s.vp;
+    const double off = glm::length(out) < 1 ? glm::length(far - s.vp)
+                                            : std::abs(glm::dot(lineThrough(s.vp, hint[kNearOf[b]]), homogeneous(far)));
+    if (off > 2.0 * reach) {
+      return asGiven(d, std::string(cornerName(kFarOf[b])) + " lies " + std::to_string(std::lround(off)) +
+                            " px off the line from the photo's vanishing point through " + cornerName(kNearOf[b]));
+    }
   }
   std::array<double, kBoundaryCount> angle{}, angleReach{};
   for (int b = 0; b < kBoundaryCount; ++b) {
@@ -904,7 +894,12 @@ CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const st
   CorridorDetection fitted = std::move(done->detection);
   if (!far) doubt(fitted, "no far wall with edges on all four sides near where it was put");
   for (int k = 0; k < kCornerCount; ++k) {
-    const double moved = glm::length(fitted.corners[k].px - hint[k]);
+    // A near corner slides along its boundary to the depth convention's place; only how
+    // far it moved across the boundary counts.
+    const bool isNear = k >= P5;
+    const glm::dvec3 boundary = lineThrough(s.vp, fitted.corners[k].px);
+    const double moved = isNear ? std::abs(glm::dot(boundary, homogeneous(hint[k])))
+                                : glm::length(fitted.corners[k].px - hint[k]);
     if (moved > 2 * reach) {
       return asGiven(d, std::string(cornerName(k)) + " would move " + std::to_string(std::lround(moved)) +
                             " px from where it was put");

@@ -17,6 +17,8 @@ inline glm::dvec3 normalizedLine(glm::dvec3 line) {
   const double n = std::hypot(line.x, line.y);
   return n > 0 ? line / n : line;
 }
+// The z of the 3D cross product: |a||b| sin(angle from a to b).
+inline double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 inline glm::dvec3 lineThrough(glm::dvec3 a, glm::dvec3 b) { return normalizedLine(glm::cross(a, b)); }
 inline glm::dvec3 lineThrough(glm::dvec2 a, glm::dvec2 b) { return lineThrough(homogeneous(a), homogeneous(b)); }
 
