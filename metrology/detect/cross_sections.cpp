@@ -46,6 +46,24 @@ double sideCoverage(const WorkingImage& image, glm::dvec2 a, glm::dvec2 b) {
   return samples > 0 ? static_cast<double>(covered) / samples : 0.0;
 }
 
+// How strong a step runs along a-b: the mean over its middle 80% of the strongest
+// gradient across it within a pixel (grey levels per pixel).
+double sideStrength(const WorkingImage& image, glm::dvec2 a, glm::dvec2 b) {
+  const double length = glm::length(b - a);
+  if (length < 3) return 0;
+  const glm::dvec2 along = (b - a) / length, normal(-along.y, along.x);
+  double sum = 0;
+  int samples = 0;
+  for (double s = 0.1 * length; s <= 0.9 * length; s += 1.0, ++samples) {
+    double strongest = 0;
+    for (double k = -1.0; k <= 1.0; k += 0.5) {
+      strongest = std::max(strongest, std::abs(glm::dot(image.gradient(a + s * along + k * normal), normal)));
+    }
+    sum += strongest;
+  }
+  return samples > 0 ? sum / samples : 0.0;
+}
+
 // Edge indicator along one boundary ray, one sample per working pixel of radius,
 // as a prefix sum so any stretch's coverage is one subtraction.
 struct RayEdges {
@@ -210,6 +228,133 @@ Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSect
 std::optional<CrossSectionMatch> findFarWallNear(const WorkingImage& image, const CrossSectionFamily& family,
                                                  double tCentre, double reach) {
   return scanFarWall(image, family, tCentre - reach, tCentre + reach, /*sidesSeen=*/3);
+}
+
+std::optional<CrossSectionMatch> fitFarWallNear(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 horizontal,
+                                                glm::dvec3 vertical, const Quad& rough, double reach) {
+  constexpr int kCandidates = 5;  // a checkered floor's tile joints below the foot are edges too
+  // Where the person put each side counts a little: of two edges that bear a box out
+  // about equally (a ceiling's edge and a lit band's below it), the nearer is taken.
+  constexpr double kPlacedWeight = 0.2;
+  // Of two edges a side could be on, the stronger step is more likely the wall's own (a
+  // ceiling meeting a lit wall, against a faint band on the wall below it).
+  constexpr double kStrengthWeight = 0.4;
+  // Each side's candidates: lines through its point, offset across the side put, where
+  // their edge coverage over the stretch put shows an edge (the kCandidates best).
+  struct Candidate {
+    glm::dvec3 line;
+    double offset;    // from where it was put, in reaches
+    double strength;  // its step's strength over the strongest candidate's on its side
+  };
+  std::array<std::vector<Candidate>, 4> candidates;
+  for (int side = 0; side < 4; ++side) {
+    const glm::dvec2 a = rough[kSideCorners[side][0]], b = rough[kSideCorners[side][1]];
+    const glm::dvec3 point = side < 2 ? horizontal : vertical;
+    const glm::dvec2 along = glm::normalize(b - a), normal(-along.y, along.x), middle = 0.5 * (a + b);
+    std::vector<double> offsets, coverage, strength;
+    for (double d = -reach; d <= reach; d += kStepPx) {
+      const glm::dvec3 line = lineThrough(homogeneous(middle + d * normal), point);
+      const auto onLine = [&](glm::dvec2 p) { return p - glm::dot(line, homogeneous(p)) * glm::dvec2(line.x, line.y); };
+      offsets.push_back(d);
+      coverage.push_back(sideCoverage(image, onLine(a), onLine(b)));
+      strength.push_back(sideStrength(image, onLine(a), onLine(b)));
+    }
+    // Each stretch of lines with edges along the side gives the line at its inner end
+    // (the far wall's own edge: beyond it a textured floor or wall may keep the edges
+    // going, as refineCrossSection takes the innermost edge too), a pixel out from where
+    // the edge map starts; its strength the strongest step within 2 px of there.
+    const glm::dvec2 centre = 0.25 * (rough[0] + rough[1] + rough[2] + rough[3]);
+    const double inward = glm::dot(centre - middle, normal) > 0 ? 1.0 : -1.0;
+    const int n = static_cast<int>(coverage.size()), onePx = static_cast<int>(std::lround(1.0 / kStepPx));
+    std::vector<std::array<double, 3>> peaks;  // coverage, strength, offset
+    for (int i = 0; i < n;) {
+      if (coverage[i] < kMinSideCoverage) {
+        ++i;
+        continue;
+      }
+      int j = i;
+      while (j + 1 < n && coverage[j + 1] >= kMinSideCoverage) ++j;
+      const int inner = inward > 0 ? std::max(i, j - onePx) : std::min(j, i + onePx);
+      double best = 0, most = 0;
+      for (int k = std::max(i, inner - 2 * onePx); k <= std::min(j, inner + 2 * onePx); ++k) {
+        best = std::max(best, strength[k]), most = std::max(most, coverage[k]);
+      }
+      peaks.push_back({most, best, offsets[inner]});
+      i = j + 1;
+    }
+    std::sort(peaks.begin(), peaks.end(), std::greater<>());
+    if (peaks.size() > kCandidates) peaks.resize(kCandidates);
+    double strongest = 0;
+    for (const auto& [c, g, d] : peaks) strongest = std::max(strongest, g);
+    for (const auto& [c, g, d] : peaks) {
+      candidates[side].push_back({lineThrough(homogeneous(middle + d * normal), point), d / reach, g / strongest});
+    }
+    if (candidates[side].empty()) return std::nullopt;
+  }
+  // The boundary through a corner: the share of the ray just beyond the corner with an
+  // edge running along it, less the share just inside it, as scanFarWall weighs it, but
+  // with only edges that run along the ray counted (the gradient within about 27 degrees
+  // of square to it): where the boundaries themselves do not show, the edges the rays
+  // cross (a band across the far wall, a pipe) would otherwise pass for them.
+  const auto runsOn = [&](glm::dvec2 corner) {
+    const double r = glm::length(corner - vp);
+    if (r < 4) return -1.0;
+    const glm::dvec2 dir = (corner - vp) / r, normal(-dir.y, dir.x);
+    const double end = distanceToBorder(image, vp, dir);
+    const auto share = [&](double from, double to) {
+      to = std::min(to, end);
+      int samples = 0, along = 0;
+      for (double s = from; s < to; s += 1.0, ++samples) {
+        for (double k = -2.0; k <= 2.0; k += 1.0) {
+          const glm::dvec2 g = image.gradient(vp + s * dir + k * normal);
+          const double across = std::abs(glm::dot(g, normal));
+          if (across > kEdgeGreyPerPx && std::abs(glm::dot(g, dir)) < 0.5 * across) {
+            ++along;
+            break;
+          }
+        }
+      }
+      return samples > 0 ? static_cast<double>(along) / samples : 0.0;
+    };
+    return share(r + 2, r + 2 + std::max(10.0, 0.5 * r)) - share(0.5 * r, r - 2);
+  };
+  // Each corner's boundary support, once per pair of sides that make it.
+  const auto corners = [&](int a, int b) {
+    std::vector<std::vector<std::pair<glm::dvec2, double>>> at(candidates[a].size());
+    for (size_t i = 0; i < candidates[a].size(); ++i) {
+      for (const Candidate& other : candidates[b]) {
+        const auto p = intersect(candidates[a][i].line, other.line);
+        at[i].push_back(p ? std::pair{*p, runsOn(*p)} : std::pair{glm::dvec2(0), -2.0});
+      }
+    }
+    return at;
+  };
+  const auto topLeft = corners(kTopSide, kLeftSide), topRight = corners(kTopSide, kRightSide),
+             bottomLeft = corners(kBottomSide, kLeftSide), bottomRight = corners(kBottomSide, kRightSide);
+  std::optional<CrossSectionMatch> best;
+  for (size_t t = 0; t < candidates[kTopSide].size(); ++t)
+    for (size_t b = 0; b < candidates[kBottomSide].size(); ++b)
+      for (size_t l = 0; l < candidates[kLeftSide].size(); ++l)
+        for (size_t r = 0; r < candidates[kRightSide].size(); ++r) {
+          const auto& [p1, on1] = topLeft[t][l];
+          const auto& [p2, on2] = topRight[t][r];
+          const auto& [p3, on3] = bottomLeft[b][l];
+          const auto& [p4, on4] = bottomRight[b][r];
+          if (std::min({on1, on2, on3, on4}) < -1.5) continue;  // sides that do not cross
+          CrossSectionMatch m = evaluate(image, Quad{p1, p2, p3, p4}, glm::length(p3 - vp));
+          std::array<double, 4> sorted = m.sideCoverage;
+          std::sort(sorted.begin(), sorted.end(), std::greater<>());
+          m.boundaryContrast = (on1 + on2 + on3 + on4) / 4;
+          const Candidate &top = candidates[kTopSide][t], &bottom = candidates[kBottomSide][b],
+                          &left = candidates[kLeftSide][l], &right = candidates[kRightSide][r];
+          const double moved = (top.offset * top.offset + bottom.offset * bottom.offset + left.offset * left.offset +
+                                right.offset * right.offset) / 4;
+          const double strength = (top.strength + bottom.strength + left.strength + right.strength) / 4;
+          m.score = (sorted[0] + sorted[1] + sorted[2]) / 3 + m.boundaryContrast - kPlacedWeight * moved +
+                    kStrengthWeight * strength;
+          if (!best || m.score > best->score) best = m;
+        }
+  return best;
 }
 
 double nearestSection(const CrossSectionFamily& family, const Quad& q, double tFrom, double tTo) {

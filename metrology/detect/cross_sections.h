@@ -72,6 +72,20 @@ inline constexpr double kClearFarWallScore = 1.2;
 std::optional<CrossSectionMatch> findFarWallNear(const WorkingImage& image, const CrossSectionFamily& family,
                                                  double tCentre, double reach);
 
+// The far wall around the quad a person put (`rough`, working pixels, P1..P4), each of
+// its sides free on its own: the side a line through its vanishing point (`horizontal`
+// for top and bottom, `vertical` for the sides) within `reach` of where it was put, on
+// one of the few best-edged lines there; the four chosen together so that the box's
+// boundaries, the rays from `vp` through its corners, run on beyond the corners and not
+// inside them (a pipe beside the far wall's corner is an edge too, but no boundary
+// runs from it). Scored as findFarWall scores (three best sides), with a little more for
+// the stronger steps and a little less for lines far from where the person put them;
+// nullopt when a side shows no edge within reach. Each side is taken at the inner end
+// of the lines with edges along it (a checkered floor keeps the edges going beyond the
+// far wall's foot).
+std::optional<CrossSectionMatch> fitFarWallNear(const WorkingImage& image, glm::dvec2 vp, glm::dvec3 horizontal,
+                                                glm::dvec3 vertical, const Quad& rough, double reach);
+
 // The t in [tFrom, tTo] whose section lies nearest (least squares over the corners)
 // to the quad `q` (the same corner order and pixels as the family).
 double nearestSection(const CrossSectionFamily& family, const Quad& q, double tFrom, double tTo);

@@ -841,10 +841,16 @@ std::optional<Quad> reflectedFoot(const WorkingImage& work, glm::dvec2 vp, glm::
   return Quad{far[0], far[1], p3, *p4};
 }
 
+// Below this share of its length with edges along it, a boundary found near where a
+// person put it is not seen (the project's scenes, cluttered too: 0.79 and more; the York
+// Urban corridor P1040811: 0.36 and 0.00 for its ceiling's, white on white).
+constexpr double kSeenBoundaryCoverage = 0.5;
+
 // The box a person placed roughly (`hint`, pinhole pixels), fitted to the photo: each
 // boundary put on the edge nearest the person's line (from the vanishing point to the
 // near corner, the longer lever), the far wall at the best-edged section within reach
-// of where they put it, then the full-resolution fits of a detection, with P5..P8 at
+// of where they put it (or, where a boundary does not show, its sides fitted first:
+// fitFarWallNear), then the full-resolution fits of a detection, with P5..P8 at
 // the depth given. Where the photo does not bear the box out, the person's corners
 // come back as they were, with no confidence and the reason as a doubt.
 CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const std::array<glm::dvec2, 8>& hint) {
@@ -884,8 +890,16 @@ CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const st
                                   boundaries);
   const Quad farGiven = {work.toWorking(hint[P1]), work.toWorking(hint[P2]), work.toWorking(hint[P3]),
                          work.toWorking(hint[P4])};
+  // The far wall as a section on the boundaries found, where they show; where one of
+  // them does not (a white wall meeting a white ceiling, the boundary then taken on a
+  // trim or on nothing), its four sides first, each near where it was put.
   const double tGiven = nearestSection(family, farGiven, 1.0, 2.0 * glm::length(farGiven[2] - s.vpWork) + 2.0);
-  const std::optional<CrossSectionMatch> far = findFarWallNear(work, family, tGiven, reach * work.scale);
+  std::optional<CrossSectionMatch> far;
+  if (*std::min_element(boundaries.edgeCoverage.begin(), boundaries.edgeCoverage.end()) < kSeenBoundaryCoverage) {
+    far = fitFarWallNear(work, s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), farGiven,
+                         reach * work.scale);
+  }
+  if (!far) far = findFarWallNear(work, family, tGiven, reach * work.scale);
   const std::optional<Quad> farWork = far ? std::optional<Quad>(far->corners) : family.at(tGiven);
   if (!farWork) return asGiven(d, "the far wall's corners do not lie on the boundaries");
   const Quad nearGiven = {hint[P7], hint[P8], hint[P5], hint[P6]};

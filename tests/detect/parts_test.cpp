@@ -1,5 +1,6 @@
 // The parts of detection on inputs with exact answers.
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -203,8 +204,10 @@ TEST(DetectParts, ManhattanFrameNeedsSegments) {
   EXPECT_FALSE(estimateManhattanFrame({}, PinholeCamera{600, {320, 240}}, cv::Size(640, 480)).ok());
 }
 
-TEST(DetectParts, CrossSectionFamilyFollowsTheBoxInDepth) {
-  const Camera cam = turnedCamera();
+// The worst corner error of the cross-section family through the far wall (z = 14 m) of
+// a 2.4 x 2.8 m box seen by `cam`, each boundary's angle `angleOffRad` off, over the
+// sections at 14, 8 and 4.5 m.
+double worstSectionErrorPx(const Camera& cam, glm::dvec3 horizontal, glm::dvec3 vertical, double angleOffRad) {
   const auto section = [&](double z) {
     return Quad{cam.project({-1.2, 2.8, z}), cam.project({1.2, 2.8, z}), cam.project({-1.2, 0, z}), cam.project({1.2, 0, z})};
   };
@@ -213,16 +216,35 @@ TEST(DetectParts, CrossSectionFamilyFollowsTheBoxInDepth) {
   RecedingBoundaries rays;
   for (int b = 0; b < kBoundaryCount; ++b) {
     const glm::dvec2 d = far[std::array{2, 3, 0, 1}[b]] - vp;
-    rays.angle[b] = std::atan2(d.y, d.x);
+    rays.angle[b] = std::atan2(d.y, d.x) + angleOffRad;
   }
-  const auto homogeneousVp = [&](glm::dvec3 dir) { return homogeneous(cam.vanishing(dir)); };
-  const CrossSectionFamily family(vp, homogeneousVp({1, 0, 0}), homogeneousVp({0, 1, 0}), rays);
+  const CrossSectionFamily family(vp, horizontal, vertical, rays);
+  double worst = 0;
   for (double z : {14.0, 8.0, 4.5}) {
     const Quad truth = section(z);
-    auto q = family.at(glm::length(truth[2] - vp));
-    ASSERT_TRUE(q.has_value());
-    for (int k = 0; k < 4; ++k) EXPECT_LT(glm::length((*q)[k] - truth[k]), 1e-6) << "z " << z << " corner " << k;
+    const auto q = family.at(glm::length(truth[2] - vp));
+    if (!q) return std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k) worst = std::max(worst, glm::length((*q)[k] - truth[k]));
   }
+  return worst;
+}
+
+TEST(DetectParts, CrossSectionFamilyFollowsTheBoxInDepth) {
+  const Camera cam = turnedCamera();
+  const auto homogeneousVp = [&](glm::dvec3 dir) { return homogeneous(cam.vanishing(dir)); };
+  EXPECT_LT(worstSectionErrorPx(cam, homogeneousVp({1, 0, 0}), homogeneousVp({0, 1, 0}), 0.0), 1e-6);
+}
+
+// The camera 2 cm from the left wall (the York Urban corridor P1040853): the corridor's
+// vanishing point lies on the far wall's left side, and the left boundaries cross the
+// verticals through their corners at under a degree. With each boundary found a tenth of
+// a degree off, the top corners taken where the verticals through the feet cross the
+// ceiling's rays land 15-50 px off; taken round the right side and the top, within 2 px
+// (about what the tenth of a degree moves a corner 500 px from the vanishing point).
+TEST(DetectParts, CrossSectionFamilyWithAWallSeenEndOnTakesTheCornerRoundTheOtherSide) {
+  const Camera endOn{glm::dmat3(1.0), {-1.18, 1.5, 0}, 600.0, {320, 240}};
+  // Looking straight down the corridor: the horizontal and vertical points at infinity.
+  EXPECT_LT(worstSectionErrorPx(endOn, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), 0.1 * kPi / 180), 2.0);
 }
 
 TEST(DetectParts, DetectRejectsInputThatMakesNoSense) {
