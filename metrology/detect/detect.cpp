@@ -423,7 +423,10 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   for (int side = 0; side < 4; ++side) {
     if (!far.sideFitted[side] || far.sides[side].coverage < kMinFarSideCoverage) {
       if (!allowHiddenSide || hidden >= 0) {
-        return makeError(std::string("the far wall's ") + kSideNames[side] + " edge is not in the photo");
+        // (In the photo or not: where it was looked for, the photo shows no edge.)
+        return makeError(std::string("the far wall's ") + kSideNames[side] +
+                         (hidden >= 0 ? std::string(" and ") + kSideNames[hidden] + " show" : std::string(" shows")) +
+                         " no edge");
       }
       hidden = side;
     }
