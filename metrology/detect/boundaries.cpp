@@ -17,6 +17,13 @@ constexpr int kFineWindowBins = 8;       // 0.35 degree each side: places it
 constexpr double kFineRangeDeg = 1.0;
 constexpr double kQuadrantMarginDeg = 3.0;
 constexpr double kMinContrast = 1.0;
+// Each quadrant's strongest steps tried together when its strongest do not make a box,
+// and how far (degrees) a boundary may lie from where the other three put it (TUNE
+// 0-599: 5 and 6 gained 11 and 9 clean answers but made a wrong answer sure; 8 gained
+// 6 clean, 5 noisy, with no wrong sure answer; 12 gained 3 and 3. TUNE 112: a lamp row
+// taken for the ceiling's edge lay 44 degrees from where the other three put it).
+constexpr size_t kBoundaryCandidates = 3;
+constexpr double kBoxAgreementDeg = 8.0;
 
 // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49-style minimax polynomial),
 // several times cheaper than std::atan2 over a million pixels.
@@ -182,34 +189,113 @@ double sharpenBoundaryAngle(const WorkingImage& image, glm::dvec2 vp, double ang
   return angle + (0.5 * (first + last) - n) * step;
 }
 
-Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vp, double horizonAngle) {
+std::optional<double> impliedBoundaryAngle(const RecedingBoundaries& rays, int missing, glm::dvec2 vp,
+                                           glm::dvec3 horizontal, glm::dvec3 vertical) {
+  const auto ray = [&](int b) { return lineThrough(vp, vp + rays.direction(b)); };
+  const auto towards = [](glm::dvec2 p, glm::dvec3 point) { return glm::cross(homogeneous(p), point); };
+  constexpr double kRadius = 100.0;  // any: the sections of a box are one another's images
+  std::optional<glm::dvec2> p1, p2, p3, p4;
+  if (missing == kFloorLeft) {
+    p1 = vp + kRadius * rays.direction(kCeilingLeft);
+    p2 = intersect(towards(*p1, horizontal), ray(kCeilingRight));
+    if (p2) p4 = intersect(towards(*p2, vertical), ray(kFloorRight));
+    if (p4) p3 = intersect(towards(*p4, horizontal), towards(*p1, vertical));
+  } else {
+    p3 = vp + kRadius * rays.direction(kFloorLeft);
+    if (missing != kFloorRight) p4 = intersect(towards(*p3, horizontal), ray(kFloorRight));
+    if (missing != kCeilingLeft) p1 = intersect(towards(*p3, vertical), ray(kCeilingLeft));
+    if (missing == kFloorRight && p1) {
+      p2 = intersect(towards(*p1, horizontal), ray(kCeilingRight));
+      if (p2) p4 = intersect(towards(*p3, horizontal), towards(*p2, vertical));
+    } else if (missing == kCeilingLeft && p4) {
+      p2 = intersect(towards(*p4, vertical), ray(kCeilingRight));
+      if (p2) p1 = intersect(towards(*p2, horizontal), towards(*p3, vertical));
+    } else if (missing == kCeilingRight && p1 && p4) {
+      p2 = intersect(towards(*p1, horizontal), towards(*p4, vertical));
+    }
+  }
+  const std::array<std::optional<glm::dvec2>, kBoundaryCount> corner = {p3, p4, p1, p2};
+  if (!corner[missing]) return std::nullopt;
+  const glm::dvec2 d = *corner[missing] - vp;
+  return std::atan2(d.y, d.x);
+}
+
+Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vp, double horizonAngle,
+                                                  std::optional<std::pair<glm::dvec3, glm::dvec3>> sectionPoints) {
   if (!image.contains(vp, 1.0)) return makeError("the corridor's vanishing point lies outside the photo");
   const AngularProfile profile(image, vp);
 
   // Quadrants measured from the horizon: floor-right (0..90 degrees, v grows down),
-  // floor-left, ceiling-left, ceiling-right.
+  // floor-left, ceiling-left, ceiling-right. In each, its strongest steps (peaks of the
+  // coarse step, the strongest first).
   constexpr std::array<int, kBoundaryCount> kQuadrantOf = {1, 0, 2, 3};
-  RecedingBoundaries out;
+  std::array<std::vector<std::pair<double, int>>, kBoundaryCount> peaks;  // strength, bin
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
     const double q0 = horizonAngle + kQuadrantOf[boundary] * kPi / 2;
     const double margin = kQuadrantMarginDeg * kPi / 180;
     const int first = binOf(q0 + margin);
     const int span = static_cast<int>((kPi / 2 - 2 * margin) / (2 * kPi) * kBins);
-    double coarseStrength = -1;
-    int coarseBin = first;
+    std::vector<double> step(span + 1);
+    for (int i = 0; i <= span; ++i) step[i] = profile.step((first + i) % kBins, kCoarseWindowBins);
+    double strongest = -1;
+    int strongestBin = first;
     for (int i = 0; i <= span; ++i) {
-      const int bin = (first + i) % kBins;
-      const double s = profile.step(bin, kCoarseWindowBins);
-      if (s > coarseStrength) coarseStrength = s, coarseBin = bin;
+      if (step[i] > strongest) strongest = step[i], strongestBin = (first + i) % kBins;
     }
-    if (coarseStrength < kMinContrast) {
+    if (strongest < kMinContrast) {
       return makeError(std::string("no ") + boundaryName(boundary) + " boundary (floor, walls and ceiling look alike)");
     }
+    peaks[boundary].push_back({strongest, strongestBin});
+    for (int i = 0; i <= span; ++i) {
+      // Other peaks: the strongest within a coarse window either side, a window apart
+      // from the strongest.
+      if (step[i] < kMinContrast || std::abs(i - (strongestBin - first + kBins) % kBins) <= kCoarseWindowBins) continue;
+      bool peak = true;
+      for (int j = std::max(0, i - kCoarseWindowBins); j <= std::min(span, i + kCoarseWindowBins) && peak; ++j) {
+        peak = step[j] < step[i] || (step[j] == step[i] && j >= i);
+      }
+      if (peak) peaks[boundary].push_back({step[i], (first + i) % kBins});
+    }
+    std::sort(peaks[boundary].begin() + 1, peaks[boundary].end(), std::greater<>());
+    if (peaks[boundary].size() > kBoundaryCandidates) peaks[boundary].resize(kBoundaryCandidates);
+  }
+  // The strongest steps, unless they do not make a box and another set of them does.
+  std::array<int, kBoundaryCount> pick{};
+  if (sectionPoints) {
+    const auto [horizontal, vertical] = *sectionPoints;
+    const auto agreement = [&](const std::array<int, kBoundaryCount>& choice) {
+      RecedingBoundaries rays;
+      for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = angleOf(peaks[b][choice[b]].second);
+      double worst = 0;
+      for (int b = 0; b < kBoundaryCount; ++b) {
+        const auto implied = impliedBoundaryAngle(rays, b, vp, horizontal, vertical);
+        if (!implied) return kPi;
+        worst = std::max(worst, std::abs(std::remainder(*implied - rays.angle[b], 2 * kPi)));
+      }
+      return worst;
+    };
+    const double agree = kBoxAgreementDeg * kPi / 180;
+    if (agreement(pick) > agree) {
+      double bestStrength = -1;
+      std::array<int, kBoundaryCount> c{};
+      for (c[0] = 0; c[0] < static_cast<int>(peaks[0].size()); ++c[0])
+        for (c[1] = 0; c[1] < static_cast<int>(peaks[1].size()); ++c[1])
+          for (c[2] = 0; c[2] < static_cast<int>(peaks[2].size()); ++c[2])
+            for (c[3] = 0; c[3] < static_cast<int>(peaks[3].size()); ++c[3]) {
+              double strength = 0;
+              for (int b = 0; b < kBoundaryCount; ++b) strength += peaks[b][c[b]].first;
+              if (strength > bestStrength && agreement(c) <= agree) bestStrength = strength, pick = c;
+            }
+    }
+  }
+  RecedingBoundaries out;
+  for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
+    const auto [strength, coarseBin] = peaks[boundary][pick[boundary]];
     // Place it: the sharpest step near the coarse one. Narrow windows are not
     // misled by a texture line beside the boundary (a mortar joint one brick
     // course below a ceiling), which only a gradient would prefer.
     out.angle[boundary] = sharpestStepAngle(profile, coarseBin, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
-    out.contrast[boundary] = coarseStrength;
+    out.contrast[boundary] = strength;
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
   }
   return out;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -36,8 +38,22 @@ struct RecedingBoundaries {
 // then sharpened to the ray that best follows an image edge.
 // `vanishingPoint` is in working pixels; `horizonAngle` is the direction of the
 // horizon (towards the horizontal vanishing point) in radians, pointing right.
+// With the horizontal and vertical points (`sectionPoints`, homogeneous, working pixels),
+// the four are taken together: a box's cross-section is a rectangle whose top and bottom
+// point at the one and sides at the other, so any three boundaries fix the fourth, and
+// where the strongest steps disagree with that (a lamp row along the ceiling passing for
+// its edge with a wall), the strongest set among each quadrant's few strongest steps
+// that agrees is taken.
 Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vanishingPoint,
-                                                  double horizonAngle);
+                                                  double horizonAngle,
+                                                  std::optional<std::pair<glm::dvec3, glm::dvec3>> sectionPoints = {});
+
+// The direction (radians) of boundary `missing` that the other three of `rays` imply,
+// through a cross-section whose top and bottom point at `horizontal` and whose sides
+// point at `vertical` (homogeneous; all in working pixels); nullopt where the lines
+// do not cross.
+std::optional<double> impliedBoundaryAngle(const RecedingBoundaries& rays, int missing, glm::dvec2 vanishingPoint,
+                                           glm::dvec3 horizontal, glm::dvec3 vertical);
 
 // Share of the ray from `vp` at `angle` (working pixels, radians) whose outer half
 // runs along an image edge.

@@ -1051,7 +1051,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // Each search's far wall that was found but not completed (working pixels, its depth).
   std::optional<std::pair<Quad, double>> profileFar, boxFar;
   const glm::dvec2 horizon = directionTowards(d.horizontal.point, vp);
-  auto boundaries = findRecedingBoundaries(work, search.vpWork, std::atan2(horizon.y, horizon.x));
+  auto boundaries = findRecedingBoundaries(work, search.vpWork, std::atan2(horizon.y, horizon.x),
+                                           std::pair{work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point)});
   if (!boundaries) profileReason = boundaries.message();
   for (int b = 0; boundaries && b < kBoundaryCount && profileReason.empty(); ++b) {
     if (boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) {

@@ -247,6 +247,28 @@ TEST(DetectParts, CrossSectionFamilyWithAWallSeenEndOnTakesTheCornerRoundTheOthe
   EXPECT_LT(worstSectionErrorPx(endOn, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), 0.1 * kPi / 180), 2.0);
 }
 
+// Any three of a box's receding boundaries fix the fourth: its cross-section is a
+// rectangle whose top and bottom point at the horizontal point and sides at the vertical.
+TEST(DetectParts, ThreeBoundariesImplyTheFourth) {
+  const Camera cam = turnedCamera();
+  const glm::dvec2 vp = cam.vanishing({0, 0, 1});
+  const Quad far{cam.project({-1.2, 2.8, 14}), cam.project({1.2, 2.8, 14}), cam.project({-1.2, 0, 14}),
+                 cam.project({1.2, 0, 14})};
+  RecedingBoundaries rays;
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    const glm::dvec2 d = far[std::array{2, 3, 0, 1}[b]] - vp;
+    rays.angle[b] = std::atan2(d.y, d.x);
+  }
+  const glm::dvec3 horizontal = homogeneous(cam.vanishing({1, 0, 0})), vertical = homogeneous(cam.vanishing({0, 1, 0}));
+  for (int b = 0; b < kBoundaryCount; ++b) {
+    RecedingBoundaries off = rays;
+    off.angle[b] += 0.3;  // this one on another line: the other three put it back
+    const auto implied = impliedBoundaryAngle(off, b, vp, horizontal, vertical);
+    ASSERT_TRUE(implied.has_value()) << b;
+    EXPECT_NEAR(std::remainder(*implied - rays.angle[b], 2 * kPi), 0.0, 1e-9) << b;
+  }
+}
+
 TEST(DetectParts, DetectRejectsInputThatMakesNoSense) {
   const cv::Mat photo(480, 640, CV_8UC3, cv::Scalar(100, 100, 100));
   EXPECT_FALSE(detectCorridor(cv::Mat(), {}).ok());
