@@ -134,7 +134,6 @@ double sharpestStepAngle(const AngularProfile& profile, int coarseBin, int range
 
 }  // namespace
 
-
 const char* boundaryName(int boundary) {
   static const char* const kNames[kBoundaryCount] = {"floor-left", "floor-right", "ceiling-left", "ceiling-right"};
   return boundary >= 0 && boundary < kBoundaryCount ? kNames[boundary] : "?";
@@ -164,29 +163,6 @@ double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle) {
     ++samples;
   }
   return samples > 0 ? static_cast<double>(covered) / samples : 0.0;
-}
-
-
-double sharpenBoundaryAngle(const WorkingImage& image, glm::dvec2 vp, double angle, double reachRad) {
-  const double end = distanceToBorder(image, vp, {std::cos(angle), std::sin(angle)});
-  if (end < 10) return angle;
-  // Steps of a third of a pixel at the ray's end. The edge test reaches a pixel either
-  // side, so the best coverage is a plateau a few steps wide: of the plateaus within
-  // 0.02 of the best, the one nearest `angle`, at its middle.
-  const double step = 1.0 / (3.0 * end);
-  const int n = static_cast<int>(reachRad / step);
-  std::vector<double> coverage(2 * n + 1);
-  for (int i = -n; i <= n; ++i) coverage[i + n] = rayEdgeCoverage(image, vp, angle + i * step);
-  const double best = *std::max_element(coverage.begin(), coverage.end());
-  int nearest = -1;
-  for (int d = 0; d <= n && nearest < 0; ++d) {
-    if (coverage[n - d] >= best - 0.02) nearest = n - d;
-    else if (coverage[n + d] >= best - 0.02) nearest = n + d;
-  }
-  int first = nearest, last = nearest;
-  while (first > 0 && coverage[first - 1] >= best - 0.02) --first;
-  while (last < 2 * n && coverage[last + 1] >= best - 0.02) ++last;
-  return angle + (0.5 * (first + last) - n) * step;
 }
 
 std::optional<double> impliedBoundaryAngle(const RecedingBoundaries& rays, int missing, glm::dvec2 vp,

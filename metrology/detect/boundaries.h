@@ -59,11 +59,6 @@ std::optional<double> impliedBoundaryAngle(const RecedingBoundaries& rays, int m
 // runs along an image edge.
 double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle);
 
-// The ray within `reachRad` of `angle` that runs along an edge over most of its outer
-// half (rayEdgeCoverage), the nearest to `angle` among equals: a boundary a person
-// placed roughly, or one the angular profile found, put on the image's edge.
-double sharpenBoundaryAngle(const WorkingImage& image, glm::dvec2 vp, double angle, double reachRad);
-
 // The boundaries near the angles a person gave (radians, one per boundary): in each,
 // the strongest step of the angular profile within `reachRad` of it, placed by the
 // sharpest colour step near that, as findRecedingBoundaries places them (a tile joint
