@@ -253,15 +253,13 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     const double agree = kBoxAgreementDeg * kPi / 180;
     if (agreement(pick) > agree) {
       double bestStrength = -1;
-      std::array<int, kBoundaryCount> c{};
-      for (c[0] = 0; c[0] < static_cast<int>(peaks[0].size()); ++c[0])
-        for (c[1] = 0; c[1] < static_cast<int>(peaks[1].size()); ++c[1])
-          for (c[2] = 0; c[2] < static_cast<int>(peaks[2].size()); ++c[2])
-            for (c[3] = 0; c[3] < static_cast<int>(peaks[3].size()); ++c[3]) {
-              double strength = 0;
-              for (int b = 0; b < kBoundaryCount; ++b) strength += peaks[b][c[b]].first;
-              if (strength > bestStrength && agreement(c) <= agree) bestStrength = strength, pick = c;
-            }
+      std::array<int, kBoundaryCount> counts{};
+      for (int b = 0; b < kBoundaryCount; ++b) counts[b] = static_cast<int>(peaks[b].size());
+      forEachChoice(counts, [&](const std::array<int, kBoundaryCount>& c) {
+        double strength = 0;
+        for (int b = 0; b < kBoundaryCount; ++b) strength += peaks[b][c[b]].first;
+        if (strength > bestStrength && agreement(c) <= agree) bestStrength = strength, pick = c;
+      });
     }
   }
   RecedingBoundaries out;

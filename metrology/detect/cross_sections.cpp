@@ -106,6 +106,14 @@ double shortestSide(const Quad& q) {
   return least;
 }
 
+// The mean of the k largest of v (v sorted, largest first, in place).
+double meanOfBest(std::array<double, 4>& v, int k) {
+  std::sort(v.begin(), v.end(), std::greater<>());
+  double mean = 0;
+  for (int i = 0; i < k; ++i) mean += v[i] / k;
+  return mean;
+}
+
 double meanOf(const std::array<double, 4>& v) { return (v[0] + v[1] + v[2] + v[3]) / 4; }
 double minOf(const std::array<double, 4>& v) { return *std::min_element(v.begin(), v.end()); }
 
@@ -199,7 +207,7 @@ std::optional<CrossSectionMatch> scanFarWall(const WorkingImage& image, const Cr
     CrossSectionMatch m = evaluate(image, *q, t);
     m.score = -1;
     std::array<double, 4> sorted = m.sideCoverage;
-    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    const double seen = meanOfBest(sorted, sidesSeen);
     if (sorted[sidesSeen - 1] >= kMinSideCoverage) {
       double outside = 0, inside = 0;
       for (int b = 0; b < kBoundaryCount; ++b) {
@@ -208,8 +216,6 @@ std::optional<CrossSectionMatch> scanFarWall(const WorkingImage& image, const Cr
         inside += rays[b].coverage(0.5 * r, r - 2);
       }
       m.boundaryContrast = (outside - inside) / kBoundaryCount;
-      double seen = 0;
-      for (int k = 0; k < sidesSeen; ++k) seen += sorted[k] / sidesSeen;
       m.score = seen + m.boundaryContrast;
     }
     scan.push_back(m);
@@ -345,28 +351,25 @@ std::optional<CrossSectionMatch> fitFarWallNear(const WorkingImage& image, glm::
   const auto topLeft = corners(kTopSide, kLeftSide), topRight = corners(kTopSide, kRightSide),
              bottomLeft = corners(kBottomSide, kLeftSide), bottomRight = corners(kBottomSide, kRightSide);
   std::optional<CrossSectionMatch> best;
-  for (size_t t = 0; t < candidates[kTopSide].size(); ++t)
-    for (size_t b = 0; b < candidates[kBottomSide].size(); ++b)
-      for (size_t l = 0; l < candidates[kLeftSide].size(); ++l)
-        for (size_t r = 0; r < candidates[kRightSide].size(); ++r) {
-          const auto& [p1, on1] = topLeft[t][l];
-          const auto& [p2, on2] = topRight[t][r];
-          const auto& [p3, on3] = bottomLeft[b][l];
-          const auto& [p4, on4] = bottomRight[b][r];
-          if (std::min({on1, on2, on3, on4}) < -1.5) continue;  // sides that do not cross
-          CrossSectionMatch m = evaluate(image, Quad{p1, p2, p3, p4}, glm::length(p3 - vp));
-          std::array<double, 4> sorted = m.sideCoverage;
-          std::sort(sorted.begin(), sorted.end(), std::greater<>());
-          m.boundaryContrast = (on1 + on2 + on3 + on4) / 4;
-          const Candidate &top = candidates[kTopSide][t], &bottom = candidates[kBottomSide][b],
-                          &left = candidates[kLeftSide][l], &right = candidates[kRightSide][r];
-          const double moved = (top.offset * top.offset + bottom.offset * bottom.offset + left.offset * left.offset +
-                                right.offset * right.offset) / 4;
-          const double strength = (top.strength + bottom.strength + left.strength + right.strength) / 4;
-          m.score = (sorted[0] + sorted[1] + sorted[2]) / 3 + m.boundaryContrast - kPlacedWeight * moved +
-                    kStrengthWeight * strength;
-          if (!best || m.score > best->score) best = m;
-        }
+  std::array<int, 4> counts{};
+  for (int side = 0; side < 4; ++side) counts[side] = static_cast<int>(candidates[side].size());
+  forEachChoice(counts, [&](const std::array<int, 4>& c) {
+    const auto& [p1, on1] = topLeft[c[kTopSide]][c[kLeftSide]];
+    const auto& [p2, on2] = topRight[c[kTopSide]][c[kRightSide]];
+    const auto& [p3, on3] = bottomLeft[c[kBottomSide]][c[kLeftSide]];
+    const auto& [p4, on4] = bottomRight[c[kBottomSide]][c[kRightSide]];
+    if (std::min({on1, on2, on3, on4}) < -1.5) return;  // sides that do not cross
+    CrossSectionMatch m = evaluate(image, Quad{p1, p2, p3, p4}, glm::length(p3 - vp));
+    m.boundaryContrast = (on1 + on2 + on3 + on4) / 4;
+    double moved = 0, strength = 0;
+    for (int side = 0; side < 4; ++side) {
+      const Candidate& chosen = candidates[side][c[side]];
+      moved += chosen.offset * chosen.offset, strength += chosen.strength;
+    }
+    std::array<double, 4> sides = m.sideCoverage;
+    m.score = meanOfBest(sides, 3) + m.boundaryContrast - kPlacedWeight * moved / 4 + kStrengthWeight * strength / 4;
+    if (!best || m.score > best->score) best = m;
+  });
   return best;
 }
 

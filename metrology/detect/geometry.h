@@ -2,7 +2,9 @@
 // image coordinates (pixels; origin at the centre of the top-left pixel, v down).
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -63,6 +65,21 @@ inline double wrapAngle(double a) {
   constexpr double kTwoPi = 6.283185307179586;
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
+}
+
+// Calls f(choice) for every choice of one index per slot (index i in [0, counts[i])),
+// the last slot changing fastest, as nested loops over the slots in order would.
+template <std::size_t N, class F>
+void forEachChoice(const std::array<int, N>& counts, F&& f) {
+  for (int n : counts)
+    if (n <= 0) return;
+  std::array<int, N> choice{};
+  for (;;) {
+    f(static_cast<const std::array<int, N>&>(choice));
+    std::size_t i = N;
+    while (i > 0 && ++choice[i - 1] == counts[i - 1]) choice[--i] = 0;
+    if (i == 0) return;
+  }
 }
 
 }  // namespace pw::metrology::detect
