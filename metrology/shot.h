@@ -94,10 +94,15 @@ struct ObjectMeasure {
 
 // An object in the photo to stand up in the model (`build`; modeling/stand_up.h): the
 // outline a person drew around it, which need not be tight (GrabCut finds the object
-// inside it), down to where it stands on the floor.
+// inside it), down to where it stands on the floor. Flat: one upright cut-out facing the
+// photo's camera (a person, a plant); a box: a box standing on the floor, its sides along
+// the corridor's axes (a cabinet, a bench, a radiator).
+enum class CutoutShape { kFlat, kBox };
+
 struct Cutout {
   std::string name;
   std::vector<glm::dvec2> outlinePx;  // a polygon of 3 or more photo pixels (a rectangle: 4)
+  CutoutShape shape = CutoutShape::kFlat;
   bool operator==(const Cutout&) const = default;
 };
 

@@ -397,31 +397,57 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
         }
       }
     }
-    // Objects stood up: each a vertical cut-out on the floor, its texture's alpha the
-    // object's mask, seen from both sides.
+    // Objects stood up: a vertical cut-out on the floor or a box, each face the photo sees
+    // textured with its alpha the object's mask, seen from both sides; the faces the
+    // photo does not see in the object's colour.
     for (const StandingObject& object : model.standing) {
-      engine::Mesh mesh;
-      for (const glm::dvec3& corner : object.cornersM) mesh.positions.emplace_back(corner);
-      mesh.normals.assign(4, glm::vec3(object.normal));
-      mesh.texCoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
-      mesh.indices = {0, 1, 2, 0, 2, 3};
-      mesh.solid = false;
-      auto texture = std::make_shared<engine::Texture>();
-      texture->image = std::make_shared<engine::Image>(object.image);
       const std::string label = "standing_" + fileSafe(object.name);
-      texture->url = model.name + "_" + label + ".png";
-      texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
-      texture->sourceFromTexCoord = object.sourceFromTexCoord;
-      auto appearance = std::make_shared<engine::Appearance>();
-      appearance->texture = texture;
-      if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
-      addShape(std::move(mesh), appearance, label);
-      char line[320];
-      std::snprintf(line, sizeof line,
-                    "stood up: %s (%s_%s), a cut-out %.2f m wide and %.2f m high on the floor at x %.2f m, z %.2f m, "
-                    "%.2f m from the photo's camera",
-                    object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.heightM,
-                    object.footM.x, object.footM.z, object.distanceM);
+      static constexpr const char* kFaceNames[] = {"front", "back", "left", "right", "top"};
+      for (size_t f = 0; f < object.faces.size(); ++f) {
+        const StandingFace& face = object.faces[f];
+        const std::string faceLabel =
+            object.shape == metrology::CutoutShape::kBox ? label + "_" + kFaceNames[std::min<size_t>(f, 4)] : label;
+        engine::Mesh mesh;
+        for (const glm::dvec3& corner : face.cornersM) mesh.positions.emplace_back(corner);
+        mesh.normals.assign(4, glm::vec3(face.normal));
+        mesh.indices = {0, 1, 2, 0, 2, 3};
+        mesh.solid = false;
+        if (face.image.rgba.empty()) {
+          if (!options.lit) mesh.colors.assign(4, glm::vec4(face.colour, 1.0f));
+          addShape(std::move(mesh), untextured(face.colour), faceLabel);
+          continue;
+        }
+        mesh.texCoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+        auto texture = std::make_shared<engine::Texture>();
+        texture->image = std::make_shared<engine::Image>(face.image);
+        texture->url = model.name + "_" + faceLabel + ".png";
+        texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
+        texture->sourceFromTexCoord = face.sourceFromTexCoord;
+        auto appearance = std::make_shared<engine::Appearance>();
+        appearance->texture = texture;
+        if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
+        addShape(std::move(mesh), appearance, faceLabel);
+      }
+      char line[480];
+      if (object.shape == metrology::CutoutShape::kBox) {
+        char depth[96];
+        if (object.depthSeen) {
+          std::snprintf(depth, sizeof depth, "its depth \u00b1 %.2f m", object.depthSigmaM);
+        } else {
+          std::snprintf(depth, sizeof depth, "its depth not seen in the photo (its side edge on), a cabinet's taken");
+        }
+        std::snprintf(line, sizeof line,
+                      "stood up: %s (%s_%s_*), a box %.2f m wide, %.2f m deep and %.2f m high (%s) on the floor at x "
+                      "%.2f m, z %.2f m, %.2f m from the photo's camera",
+                      object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.depthM, object.heightM,
+                      depth, object.footM.x, object.footM.z, object.distanceM);
+      } else {
+        std::snprintf(line, sizeof line,
+                      "stood up: %s (%s_%s), a cut-out %.2f m wide and %.2f m high on the floor at x %.2f m, z %.2f m, "
+                      "%.2f m from the photo's camera",
+                      object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.heightM,
+                      object.footM.x, object.footM.z, object.distanceM);
+      }
       scene.info.push_back(line);
     }
     // Which parts are synthesized, for people and other viewers (WorldInfo info text).

@@ -183,7 +183,7 @@ Status readShotObjects(const json& fields, const std::string& where, std::vector
 }
 
 // A shot file's objects to stand up (README "Standing objects up"):
-//   "cutouts": [{"name": "person", "outline_px": [[u, v], [u, v], [u, v], ...]}, ...]
+//   "cutouts": [{"name": "person", "outline_px": [[u, v], [u, v], [u, v], ...], "shape": "flat"|"box"}, ...]
 Status readCutouts(const json& fields, const std::string& where, std::vector<metrology::Cutout>& cutouts) {
   if (!fields.contains("cutouts")) return {};
   const json& list = fields["cutouts"];
@@ -206,6 +206,14 @@ Status readCutouts(const json& fields, const std::string& where, std::vector<met
       cutout.outlinePx.push_back(px);
     }
     if (cutout.outlinePx.size() < 3) return makeError(at + ": its outline needs 3 points or more (a rectangle: 4)");
+    if (c.contains("shape")) {
+      const json& shape = c["shape"];
+      if (shape == "box") {
+        cutout.shape = metrology::CutoutShape::kBox;
+      } else if (shape != "flat") {
+        return makeError(at + ": its shape is \"flat\" (a cut-out facing the camera) or \"box\" (a box on the floor)");
+      }
+    }
     for (const metrology::Cutout& earlier : cutouts) {
       if (earlier.name == cutout.name) return makeError(at + ": the name \"" + cutout.name + "\" is used twice");
     }
@@ -465,7 +473,9 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
     for (const metrology::Cutout& c : shot.cutouts) {
       json outline = json::array();
       for (const glm::dvec2& p : c.outlinePx) outline.push_back({p.x, p.y});
-      cutouts.push_back({{"name", c.name}, {"outline_px", outline}});
+      json cutout = {{"name", c.name}, {"outline_px", outline}};
+      if (c.shape == metrology::CutoutShape::kBox) cutout["shape"] = "box";
+      cutouts.push_back(std::move(cutout));
     }
     doc["cutouts"] = cutouts;
   }

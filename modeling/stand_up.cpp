@@ -31,6 +31,15 @@ constexpr double kFillRadiusPx = 5.0;
 // Cut-out texels per photo pixel at the object's distance (a second sampling blurs less).
 constexpr double kTexelsPerPhotoPixel = 2.0;
 constexpr int kMaxTextureSide = 4096;
+// A box's depth where the photo shows none of its sides (a cabinet's).
+constexpr double kDefaultDepthM = 0.5;
+// How far (photo pixels) an object's outline in GrabCut's mask strays from its true edge,
+// one standard deviation: what a box's depth seen along its side is good to (cabinets of
+// the random TUNE scenes, exact corners: their depth errors, as pixels along the side,
+// had a median of 2.5 px and a long tail).
+constexpr double kOutlinePx = 4.0;
+// A box-like object longer than this along the corridor is not a piece of furniture.
+constexpr double kMaxDepthM = 3.0;
 
 // The object inside the outline: GrabCut seeded with the outline's inside as probably
 // the object and everything outside it as surely not; the outline's own pixels when
@@ -101,22 +110,59 @@ std::optional<glm::dvec3> onPlane(const Measurement& m, glm::dvec2 photoPx, glm:
   return m.pose.positionM + t * ray;
 }
 
-Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const metrology::Cutout& cutout,
-                               const cv::Mat& mask) {
-  StandingObject object;
-  object.name = cutout.name;
-  object.maskPixels = cv::countNonZero(mask);
-  const std::string who = "cutout \"" + cutout.name + "\"";
-  if (object.maskPixels == 0) return makeError(who + ": its outline holds no pixel of the photo");
-  const cv::Rect box = cv::boundingRect(mask);
-  double outlineBottom = -1;
-  for (const glm::dvec2& p : cutout.outlinePx) outlineBottom = std::max(outlineBottom, p.y);
-  if (box.y + box.height >= photo.rows || outlineBottom >= photo.rows - 1) {
-    return makeError(who + ": it runs off the photo's bottom edge, so where it stands on the floor is not in the photo "
-                           "(remove the cutout, or outline only objects whose foot shows)");
+// A face textured with the photo read through the camera at each texel's centre, its
+// alpha the object's mask widened by kHaloPx (`halo`): there the face shows the photo's own
+// pixels about the object, so that from the photo's camera its edge is the photo's (not a
+// blend with the fill behind it); from elsewhere, a thin halo.
+void textureFace(const cv::Mat& photo, const Measurement& m, const cv::Mat& halo, StandingFace& face) {
+  const auto& c = face.cornersM;
+  const double widthM = glm::length(c[1] - c[0]), heightM = glm::length(c[3] - c[0]);
+  const glm::dvec3 right = (c[1] - c[0]) / widthM, up = (c[3] - c[0]) / heightM;
+  const double depth = glm::length(0.25 * (c[0] + c[1] + c[2] + c[3]) - m.pose.positionM);
+  const double pxPerM = kTexelsPerPhotoPixel * m.camera.focalPx / std::max(depth, 1e-3);
+  const double scale = std::min({1.0, kMaxTextureSide / (pxPerM * widthM), kMaxTextureSide / (pxPerM * heightM)});
+  const int w = std::max(2, static_cast<int>(std::ceil(pxPerM * scale * widthM)));
+  const int h = std::max(2, static_cast<int>(std::ceil(pxPerM * scale * heightM)));
+  cv::Mat mapX(h, w, CV_32F), mapY(h, w, CV_32F);
+  for (int row = 0; row < h; ++row) {
+    for (int col = 0; col < w; ++col) {
+      const glm::dvec3 p = c[3] + (col + 0.5) / w * widthM * right - (row + 0.5) / h * heightM * up;
+      const glm::dvec3 q = metrology::projectToPixel(m.camera, m.pose, p);
+      const glm::dvec2 px = metrology::distortPixel(m.camera, glm::dvec2(q));
+      mapX.at<float>(row, col) = static_cast<float>(px.x);
+      mapY.at<float>(row, col) = static_cast<float>(px.y);
+    }
   }
-  // The foot: the object's lowest row, at the middle of its pixels there (the bottom
-  // edge of that row: where the object meets the floor).
+  cv::Mat colour, alpha, rgba;
+  cv::remap(photo, colour, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
+  cv::remap(halo, alpha, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
+  cv::cvtColor(colour, rgba, cv::COLOR_BGR2RGBA);
+  cv::mixChannels(std::vector<cv::Mat>{alpha}, std::vector<cv::Mat>{rgba}, {0, 3});
+  // Texture coordinates to the photo's pinhole pixels: metric x = s W, y = (1 - t) H
+  // from the top-left corner, as the surfaces' textures (corridor_model.cpp).
+  const cv::Matx33d photoFromMetric = metrology::photoFromPlane(m.camera, m.pose, c[3], right, -up);
+  const cv::Matx33d photoFromTexCoord = photoFromMetric * cv::Matx33d(widthM, 0, 0, 0, -heightM, heightM, 0, 0, 1);
+  for (int col = 0; col < 3; ++col) {
+    for (int row = 0; row < 3; ++row) {
+      face.sourceFromTexCoord[col][row] = static_cast<float>(photoFromTexCoord(row, col) / photoFromTexCoord(2, 2));
+    }
+  }
+  face.image.width = w;
+  face.image.height = h;
+  face.image.rgba.assign(rgba.data, rgba.data + rgba.total() * 4);
+}
+
+// Where the object's pixels show: its lowest one's foot point, or the error saying why
+// the object does not stand on this corridor's floor.
+struct Foot {
+  glm::dvec2 px;
+  glm::dvec3 m;
+};
+
+Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const cv::Mat& mask, const cv::Rect& box) {
+  const std::string who = "cutout \"" + cutout.name + "\"";
+  // The object's lowest row, at the middle of its pixels there (the bottom edge of that
+  // row: where the object meets the floor).
   const int footRow = box.y + box.height - 1;
   const int band = std::max(1, box.height / 50);
   double sumU = 0;
@@ -128,34 +174,42 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   }
   const glm::dvec2 footPx(sumU / std::max(1, count), footRow + 0.5);
   const std::optional<glm::dvec3> foot = onPlane(m, footPx, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
-  const glm::dvec3 eye = m.pose.positionM;
-  if (!foot || glm::length(*foot - eye) > 1e4) {
+  if (!foot || glm::length(*foot - m.pose.positionM) > 1e4) {
     return makeError(who + ": its lowest pixel (" + std::to_string(std::lround(footPx.x)) + ", " +
                      std::to_string(footRow) +
                      ") is on or above the horizon: draw the outline down to where the object stands on the floor");
   }
-  const metrology::Dimensions& size = m.size;
   constexpr double kSlackM = 0.05;
-  if (std::abs(foot->x) > 0.5 * size.widthM + kSlackM || foot->z < -size.lengthM - kSlackM) {
+  if (std::abs(foot->x) > 0.5 * m.size.widthM + kSlackM || foot->z < -m.size.lengthM - kSlackM) {
     return makeError(who + ": its lowest pixel found (" + std::to_string(std::lround(footPx.x)) + ", " +
                      std::to_string(footRow) + ") meets the floor beyond the corridor's (at x " +
                      std::to_string(foot->x).substr(0, 5) + " m, z " + std::to_string(foot->z).substr(0, 6) +
                      " m): draw the outline down to where the object stands on this corridor's floor");
   }
-  object.footM = {std::clamp(foot->x, -0.5 * size.widthM, 0.5 * size.widthM), 0.0, std::max(foot->z, -size.lengthM)};
+  return Foot{footPx, *foot};
+}
+
+// A flat cut-out: the upright rectangle through the foot facing the photo's camera, as far
+// as the object's pixels reach on it.
+Result<StandingObject> standUpFlat(const Measurement& m, const std::string& who, const cv::Rect& box, const Foot& foot,
+                                   StandingObject object) {
+  const metrology::Dimensions& size = m.size;
+  const glm::dvec3 eye = m.pose.positionM;
+  object.footM = {std::clamp(foot.m.x, -0.5 * size.widthM, 0.5 * size.widthM), 0.0, std::max(foot.m.z, -size.lengthM)};
   // Facing the photo's camera, upright.
   glm::dvec3 toEye(eye.x - object.footM.x, 0.0, eye.z - object.footM.z);
   object.distanceM = glm::length(toEye);
   if (!(object.distanceM > 1e-3)) return makeError(who + ": it stands where the photo's camera stands");
-  object.normal = toEye / object.distanceM;
+  StandingFace& face = object.faces.emplace_back();
+  face.normal = toEye / object.distanceM;
   const glm::dvec3 up(0, 1, 0);
-  const glm::dvec3 right = glm::normalize(glm::cross(-object.normal, up));
+  const glm::dvec3 right = glm::normalize(glm::cross(-face.normal, up));
   // The rectangle: as far as the object's pixels reach on the plane, from the floor up.
   double s0 = 1e300, s1 = -1e300, top = 0;
   for (const glm::dvec2 corner : {glm::dvec2(box.x - 0.5, box.y - 0.5), glm::dvec2(box.x + box.width - 0.5, box.y - 0.5),
                                   glm::dvec2(box.x - 0.5, box.y + box.height - 0.5),
                                   glm::dvec2(box.x + box.width - 0.5, box.y + box.height - 0.5)}) {
-    const std::optional<glm::dvec3> p = onPlane(m, corner, object.footM, object.normal);
+    const std::optional<glm::dvec3> p = onPlane(m, corner, object.footM, face.normal);
     if (!p) return makeError(who + ": the photo's camera sees it edge on");
     const double s = glm::dot(*p - object.footM, right);
     s0 = std::min(s0, s), s1 = std::max(s1, s), top = std::max(top, p->y);
@@ -164,64 +218,277 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   object.heightM = top;
   if (!(object.widthM > 1e-3 && object.heightM > 1e-3)) return makeError(who + ": it has no height above the floor");
   const glm::dvec3 bottomLeft = object.footM + s0 * right, bottomRight = object.footM + s1 * right;
-  object.cornersM = {bottomLeft, bottomRight, bottomRight + object.heightM * up, bottomLeft + object.heightM * up};
+  face.cornersM = {bottomLeft, bottomRight, bottomRight + object.heightM * up, bottomLeft + object.heightM * up};
   // A rectangle reaching through a side wall would be hidden there by the wall (filled
   // behind it): it is brought nearer along the photo's rays, scaled about the eye, until
   // it stands inside the walls. From the photo's camera nothing changes; it stands a
   // little nearer and its foot a little above the floor (a foot found too far: TUNE and
   // held-out scenes where GrabCut lost an object's base).
   double fit = 1.0;
-  for (const glm::dvec3& c : object.cornersM) {
+  for (const glm::dvec3& c : face.cornersM) {
     const double wall = c.x > 0 ? 0.5 * size.widthM : -0.5 * size.widthM;
     if (std::abs(c.x) > std::abs(wall) && std::abs(c.x - eye.x) > 1e-9) fit = std::min(fit, (wall - eye.x) / (c.x - eye.x));
   }
   if (fit < 1.0 && fit > 0.0) {
-    for (glm::dvec3& c : object.cornersM) c = eye + fit * (c - eye);
+    for (glm::dvec3& c : face.cornersM) c = eye + fit * (c - eye);
     object.footM = eye + fit * (object.footM - eye);
     object.widthM *= fit;
     object.heightM *= fit;
     object.distanceM = glm::length(glm::dvec3(eye.x - object.footM.x, 0.0, eye.z - object.footM.z));
   }
-
-  // The texture: the photo and the mask read through the camera at each texel's centre.
-  const double depth = glm::length(object.footM - eye);
-  const double pxPerM = kTexelsPerPhotoPixel * m.camera.focalPx / std::max(depth, 1e-3);
-  const double scale = std::min({1.0, kMaxTextureSide / (pxPerM * object.widthM), kMaxTextureSide / (pxPerM * object.heightM)});
-  const int w = std::max(2, static_cast<int>(std::ceil(pxPerM * scale * object.widthM)));
-  const int h = std::max(2, static_cast<int>(std::ceil(pxPerM * scale * object.heightM)));
-  cv::Mat mapX(h, w, CV_32F), mapY(h, w, CV_32F);
-  for (int row = 0; row < h; ++row) {
-    for (int col = 0; col < w; ++col) {
-      const glm::dvec3 p = object.cornersM[3] + (col + 0.5) / w * object.widthM * right - (row + 0.5) / h * object.heightM * up;
-      const glm::dvec3 q = metrology::projectToPixel(m.camera, m.pose, p);
-      const glm::dvec2 px = metrology::distortPixel(m.camera, glm::dvec2(q));
-      mapX.at<float>(row, col) = static_cast<float>(px.x);
-      mapY.at<float>(row, col) = static_cast<float>(px.y);
-    }
-  }
-  // The alpha reaches kHaloPx beyond the mask: there the cut-out shows the photo's own
-  // pixels about the object, so that from the photo's camera its edge is the photo's
-  // (not a blend with the fill behind it); from elsewhere, a thin halo.
-  cv::Mat colour, alpha, rgba, halo;
-  cv::dilate(mask, halo, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kHaloPx + 1, 2 * kHaloPx + 1)));
-  cv::remap(photo, colour, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
-  cv::remap(halo, alpha, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
-  cv::cvtColor(colour, rgba, cv::COLOR_BGR2RGBA);
-  cv::mixChannels(std::vector<cv::Mat>{alpha}, std::vector<cv::Mat>{rgba}, {0, 3});
-  // Texture coordinates to the photo's pinhole pixels: metric x = s W, y = (1 - t) H
-  // from the top-left corner, as the surfaces' textures (corridor_model.cpp).
-  const cv::Matx33d photoFromMetric = metrology::photoFromPlane(m.camera, m.pose, object.cornersM[3], right, -up);
-  const cv::Matx33d photoFromTexCoord =
-      photoFromMetric * cv::Matx33d(object.widthM, 0, 0, 0, -object.heightM, object.heightM, 0, 0, 1);
-  for (int c = 0; c < 3; ++c) {
-    for (int row = 0; row < 3; ++row) {
-      object.sourceFromTexCoord[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
-    }
-  }
-  object.image.width = w;
-  object.image.height = h;
-  object.image.rgba.assign(rgba.data, rgba.data + rgba.total() * 4);
   return object;
+}
+
+// A box on the floor, sides along the corridor's axes: x across [x0, x1], z along
+// [z0, z1] (z1 the nearer the photo's camera), from the floor to `h`.
+struct BoxM {
+  double x0 = 0, x1 = 0, z0 = 0, z1 = 0, h = 0;
+};
+
+std::array<glm::dvec3, 8> boxCorners(const BoxM& b) {
+  std::array<glm::dvec3, 8> c;
+  for (int i = 0; i < 8; ++i) c[i] = {i & 1 ? b.x1 : b.x0, i & 2 ? b.h : 0.0, i & 4 ? b.z1 : b.z0};
+  return c;
+}
+
+// How a box's outline in the photo covers the object's mask, on a region of the photo
+// shrunk to about kFitPixels (the box's outline is the convex hull of its corners).
+class BoxSilhouette {
+ public:
+  static constexpr double kFitPixels = 40000;
+  BoxSilhouette(const Measurement& m, const cv::Mat& mask, const cv::Rect& box) : m_(m) {
+    const int margin = std::max(box.width, box.height) / 4 + 2;
+    roi_ = (box + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) & cv::Rect(0, 0, mask.cols, mask.rows);
+    scale_ = std::min(1.0, std::sqrt(kFitPixels / static_cast<double>(roi_.area())));
+    cv::resize(mask(roi_), mask_, cv::Size(), scale_, scale_, cv::INTER_AREA);
+    mask_ = mask_ >= 128;
+    maskCount_ = cv::countNonZero(mask_);
+  }
+  // The share of the mask the box covers and of the box the mask fills; nullopt where a
+  // corner is behind the camera.
+  std::optional<std::pair<double, double>> cover(const BoxM& b) const {
+    std::vector<cv::Point2f> pts;
+    for (const glm::dvec3& c : boxCorners(b)) {
+      const glm::dvec3 q = metrology::projectToPixel(m_.camera, m_.pose, c);
+      if (!(q.z > 1e-3)) return std::nullopt;
+      const glm::dvec2 px = metrology::distortPixel(m_.camera, glm::dvec2(q));
+      pts.emplace_back(static_cast<float>((px.x + 0.5 - roi_.x) * scale_), static_cast<float>((px.y + 0.5 - roi_.y) * scale_));
+    }
+    std::vector<cv::Point2f> hull;
+    cv::convexHull(pts, hull);
+    std::vector<cv::Point> poly;
+    for (const cv::Point2f& p : hull) poly.emplace_back(cvRound(p.x * 16), cvRound(p.y * 16));
+    cv::Mat drawn = cv::Mat::zeros(mask_.size(), CV_8U);
+    cv::fillConvexPoly(drawn, poly, cv::Scalar(255), cv::LINE_8, 4);
+    const int both = cv::countNonZero(drawn & mask_);
+    const double area = std::abs(cv::contourArea(hull)) + 1.0;
+    return std::pair{both / std::max(1.0, static_cast<double>(maskCount_)), std::min(1.0, both / area)};
+  }
+  double score(const BoxM& b) const {
+    const auto c = cover(b);
+    return c ? c->first * c->second : -1.0;  // both: a box neither too small nor too large
+  }
+
+
+ private:
+  const Measurement& m_;
+  cv::Rect roi_;
+  double scale_ = 1;
+  cv::Mat mask_;
+  int maskCount_ = 0;
+};
+
+// A box: its footprint from where the mask's lowest pixels in each column meet the floor
+// (the front edge at one depth, the side the camera sees at one x, meeting at the
+// nearest), then every side moved to where the box's outline in the photo best covers
+// the mask (coordinate descent, halving steps).
+Result<StandingObject> standUpBox(const Measurement& m, const std::string& who, const cv::Mat& mask, const cv::Rect& box,
+                                  StandingObject object) {
+  const glm::dvec3 eye = m.pose.positionM;
+  const double halfWidth = 0.5 * m.size.widthM;
+  struct Ground {
+    int u;
+    glm::dvec3 p;
+  };
+  std::vector<Ground> ground;
+  for (int u = box.x; u < box.x + box.width; ++u) {
+    for (int v = box.y + box.height - 1; v >= box.y; --v) {
+      if (!mask.at<uint8_t>(v, u)) continue;
+      const auto p = onPlane(m, {u, v + 0.5}, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+      if (p && glm::length(*p - eye) < 1e4) ground.push_back({u, *p});
+      break;
+    }
+  }
+  if (ground.size() < 3) return makeError(who + ": too few of its pixels meet the floor to stand it up as a box");
+  // The nearest ground point is the footprint's corner nearest the camera.
+  const auto nearest = std::max_element(ground.begin(), ground.end(), [](const Ground& a, const Ground& b) { return a.p.z < b.p.z; });
+  const glm::dvec3 corner = nearest->p;
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  // The camera sees the box's side facing it: the right side of a box left of the camera,
+  // and it shows right of the corner in the photo (towards the vanishing point).
+  const bool leftOfEye = corner.x < eye.x;
+  std::vector<double> frontZ, sideX, frontX, sideZ;
+  for (const Ground& g : ground) {
+    const bool front = leftOfEye ? g.u <= nearest->u : g.u >= nearest->u;
+    if (front) frontZ.push_back(g.p.z), frontX.push_back(g.p.x);
+    else sideX.push_back(g.p.x), sideZ.push_back(g.p.z);
+  }
+  // Where to start: the footprint the ground points give, and boxes of a few sizes from
+  // the nearest corner (a ground point on the far side may be the top of the box or a
+  // shadow GrabCut kept); the best after the descent is taken.
+  const auto percentile = [](std::vector<double> v, double q) {
+    const auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
+    std::nth_element(v.begin(), at, v.end());
+    return *at;
+  };
+  const auto fromCorner = [&](double width, double depth) {
+    BoxM x;
+    x.z1 = corner.z, x.z0 = corner.z - depth;
+    x.x0 = leftOfEye ? corner.x - width : corner.x;
+    x.x1 = leftOfEye ? corner.x : corner.x + width;
+    return x;
+  };
+  std::vector<BoxM> starts;
+  {
+    BoxM x;
+    x.z1 = median(frontZ);
+    const double farX = leftOfEye ? percentile(frontX, 0.1) : percentile(frontX, 0.9);
+    const double sideAt = sideX.size() >= 3 ? median(sideX) : corner.x;
+    x.x0 = leftOfEye ? farX : sideAt;
+    x.x1 = leftOfEye ? sideAt : farX;
+    x.z0 = sideZ.size() >= 3 ? percentile(sideZ, 0.1) : x.z1 - kDefaultDepthM;
+    starts.push_back(x);
+  }
+  for (double width : {0.3, 0.6, 1.0})
+    for (double depth : {0.3, 0.6, 1.2, 2.0}) starts.push_back(fromCorner(width, depth));
+  const auto keepInside = [&](BoxM& x) {
+    constexpr double kLeastM = 0.05;
+    x.x0 = std::clamp(x.x0, -halfWidth, halfWidth - kLeastM);
+    x.x1 = std::clamp(x.x1, x.x0 + kLeastM, halfWidth);
+    x.z0 = std::clamp(x.z0, x.z1 - kMaxDepthM, x.z1);
+    x.z0 = std::max(x.z0, -m.size.lengthM);
+    x.z1 = std::clamp(x.z1, x.z0 + kLeastM, std::max(x.z0 + kLeastM, eye.z - 0.2));
+    x.h = std::clamp(x.h, kLeastM, m.size.heightM);
+  };
+  const BoxSilhouette silhouette(m, mask, box);
+  // Each start's height first (its footprint fixes the rest roughly), then every side
+  // together.
+  const auto descend = [&](BoxM b, double& best) {
+    keepInside(b);
+    best = -1;
+    for (double h = 0.05; h <= m.size.heightM; h += 0.05) {
+      BoxM t = b;
+      t.h = h;
+      const double s = silhouette.score(t);
+      if (s > best) best = s, b.h = h;
+    }
+    const double size = std::max({b.x1 - b.x0, b.z1 - b.z0, b.h});
+    for (double step = 0.1 * size; step > 0.002; step *= 0.5) {
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (double BoxM::*side : {&BoxM::x0, &BoxM::x1, &BoxM::z0, &BoxM::z1, &BoxM::h}) {
+          for (double sign : {-1.0, 1.0}) {
+            BoxM t = b;
+            t.*side += sign * step;
+            keepInside(t);
+            const double s = silhouette.score(t);
+            if (s > best + 1e-9) best = s, b = t, moved = true;
+          }
+        }
+      }
+    }
+    return b;
+  };
+  BoxM b;
+  double best = -1;
+  for (const BoxM& start : starts) {
+    double score = -1;
+    const BoxM fitted = descend(start, score);
+    if (score > best) best = score, b = fitted;
+  }
+  if (!(best > 0)) return makeError(who + ": no box on the floor covers it (is it on the floor?)");
+  const auto cover = silhouette.cover(b);
+  object.boxCoverage = cover->first, object.boxFill = cover->second;
+  // How well the photo sees its depth: the far end of the side it shows moves this many
+  // pixels per metre; the mask's edge is good to about kOutlinePx. A side seen so nearly
+  // edge on that this gives more than half the depth found says nothing of it, and the
+  // box takes a cabinet's depth instead (the far end away from the camera).
+  const auto pixelOf = [&](glm::dvec3 p) {
+    return metrology::distortPixel(m.camera, glm::dvec2(metrology::projectToPixel(m.camera, m.pose, p)));
+  };
+  // (Taken at the far end found and at a cabinet's depth, the larger: a far end run off
+  // towards the vanishing point moves few pixels per metre wherever it stops.)
+  const double seenX = b.x0 <= eye.x && eye.x <= b.x1 ? 0.5 * (b.x0 + b.x1) : leftOfEye ? b.x1 : b.x0;
+  object.depthSigmaM = 0;
+  for (const double z : {b.z0, b.z1 - kDefaultDepthM}) {
+    const glm::dvec3 end(seenX, 0.5 * b.h, z);
+    const double pxPerM = glm::length(pixelOf(end) - pixelOf(end - glm::dvec3(0, 0, 0.01))) / 0.01;
+    object.depthSigmaM = std::max(object.depthSigmaM, kOutlinePx / std::max(pxPerM, 1e-9));
+  }
+  if (object.depthSigmaM > 0.5 * (b.z1 - b.z0)) {
+    object.depthSeen = false;
+    b.z0 = std::max(b.z1 - kDefaultDepthM, -m.size.lengthM);
+  }
+  object.widthM = b.x1 - b.x0, object.depthM = b.z1 - b.z0, object.heightM = b.h;
+  object.footM = {0.5 * (b.x0 + b.x1), 0.0, 0.5 * (b.z0 + b.z1)};
+  object.distanceM = glm::length(glm::dvec3(eye.x - object.footM.x, 0.0, eye.z - object.footM.z));
+  // Five faces, each as seen from outside: bottom-left, bottom-right, top-right, top-left.
+  const std::array<glm::dvec3, 8> c = boxCorners(b);  // index: x1 ? 1 : 0, top ? 2 : 0, near ? 4 : 0
+  const struct {
+    std::array<int, 4> corners;
+    glm::dvec3 normal;
+  } sides[] = {
+      {{4, 5, 7, 6}, {0, 0, 1}},   // front (nearest the photo's camera's end)
+      {{1, 0, 2, 3}, {0, 0, -1}},  // back
+      {{0, 4, 6, 2}, {-1, 0, 0}},  // left
+      {{5, 1, 3, 7}, {1, 0, 0}},   // right
+      {{6, 7, 3, 2}, {0, 1, 0}},   // top (bottom-left is the front's top-left)
+  };
+  for (const auto& side : sides) {
+    StandingFace& face = object.faces.emplace_back();
+    for (int k = 0; k < 4; ++k) face.cornersM[k] = c[side.corners[k]];
+    face.normal = side.normal;
+  }
+  return object;
+}
+
+Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const metrology::Cutout& cutout,
+                               const cv::Mat& mask) {
+  StandingObject object;
+  object.name = cutout.name;
+  object.shape = cutout.shape;
+  object.maskPixels = cv::countNonZero(mask);
+  const std::string who = "cutout \"" + cutout.name + "\"";
+  if (object.maskPixels == 0) return makeError(who + ": its outline holds no pixel of the photo");
+  const cv::Rect box = cv::boundingRect(mask);
+  double outlineBottom = -1;
+  for (const glm::dvec2& p : cutout.outlinePx) outlineBottom = std::max(outlineBottom, p.y);
+  if (box.y + box.height >= photo.rows || outlineBottom >= photo.rows - 1) {
+    return makeError(who + ": it runs off the photo's bottom edge, so where it stands on the floor is not in the photo "
+                           "(remove the cutout, or outline only objects whose foot shows)");
+  }
+  const Result<Foot> foot = footOf(m, cutout, mask, box);
+  if (!foot) return foot.error();
+  // (A box's foot is checked too: its lowest pixel stands on this corridor's floor.)
+  auto stood = cutout.shape == metrology::CutoutShape::kBox ? standUpBox(m, who, mask, box, std::move(object))
+                                                             : standUpFlat(m, who, box, *foot, std::move(object));
+  if (!stood) return stood;
+  // The faces the photo's camera sees carry the photo; the others the object's colour.
+  const cv::Scalar mean = cv::mean(photo, mask);
+  const glm::vec3 colour(static_cast<float>(mean[2] / 255), static_cast<float>(mean[1] / 255), static_cast<float>(mean[0] / 255));
+  cv::Mat halo;
+  cv::dilate(mask, halo, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kHaloPx + 1, 2 * kHaloPx + 1)));
+  for (StandingFace& face : stood->faces) {
+    face.colour = colour;
+    const glm::dvec3 middle = 0.25 * (face.cornersM[0] + face.cornersM[1] + face.cornersM[2] + face.cornersM[3]);
+    if (stood->shape == metrology::CutoutShape::kFlat || glm::dot(m.pose.positionM - middle, face.normal) > 1e-6) {
+      textureFace(photo, m, halo, face);
+    }
+  }
+  return stood;
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 // finds the object inside the outline; the object's lowest pixel is where it meets the
 // floor. The cut-out is a vertical rectangle through that floor point, facing the photo's
 // camera, as wide and as high as the object's pixels reach on it, textured with the photo
-// and with the object's mask as alpha. From the photo's camera it covers exactly the
+// and with the object's mask as alpha. A box-like object (a cabinet, a bench) is a box
+// instead: its footprint from where the mask's lowest pixels meet the floor, then the box
+// whose outline in the photo best covers the mask; the faces the photo sees are textured
+// as the cut-out is, the others take the object's colour. From the photo's camera it covers exactly the
 // object's pixels, so the model still gives the photo back; from elsewhere the object
 // stands in the corridor. The floor and walls behind it are filled from their
 // surroundings (inpainting), so that they no longer carry it.
@@ -28,21 +31,40 @@
 
 namespace pw::modeling {
 
-struct StandingObject {
-  std::string name;
-  // The cut-out in the corridor's model frame: bottom-left, bottom-right, top-right,
-  // top-left as the photo's camera sees it; the bottom edge on the floor (y = 0).
+// One face of an object stood up: a rectangle in the corridor's model frame, its corners
+// bottom-left, bottom-right, top-right, top-left as seen from outside.
+struct StandingFace {
   std::array<glm::dvec3, 4> cornersM{};
-  glm::dvec3 footM{0.0};    // where the object's lowest pixel meets the floor
-  glm::dvec3 normal{0.0};   // horizontal, towards the photo's camera
-  double widthM = 0;        // the rectangle's, as the object's pixels reach on it
-  double heightM = 0;
-  double distanceM = 0;     // from the photo's camera to the foot, along the floor
-  engine::Image image;      // RGBA: the photo on the rectangle, alpha the object's mask
+  glm::dvec3 normal{0.0};  // outwards
+  // RGBA: the photo on the face, alpha the object's mask; empty where the photo's camera
+  // does not see the face (a box's back and far side), which is then `colour`.
+  engine::Image image;
   // Its texture coordinates (s, t, 1), t = 0 at the bottom, to the photo's pinhole pixels
   // (engine::Texture::sourceFromTexCoord): the renderer reads it as the photo was seen.
   glm::mat3 sourceFromTexCoord{1.0f};
+  glm::vec3 colour{0.5f};  // linear RGB 0-1: the object's mean colour in the photo
+};
+
+struct StandingObject {
+  std::string name;
+  metrology::CutoutShape shape = metrology::CutoutShape::kFlat;
+  // Flat: one face, an upright rectangle facing the photo's camera, its bottom edge on the
+  // floor. A box: its five faces above the floor, sides along the corridor's axes.
+  std::vector<StandingFace> faces;
+  glm::dvec3 footM{0.0};    // flat: where the object's lowest pixel meets the floor; a box: its footprint's middle
+  double widthM = 0;        // flat: as the object's pixels reach on its plane; a box: across the corridor (x)
+  double heightM = 0;
+  double depthM = 0;        // a box: along the corridor (z); flat: 0
+  // A box: its depth's ± (2 px of its outline along the side the photo shows), and
+  // whether the photo shows it at all (false: its side is seen so nearly edge on that the
+  // ± is over half of it, and the depth is a cabinet's, 0.5 m).
+  double depthSigmaM = 0;
+  bool depthSeen = true;
+  double distanceM = 0;     // from the photo's camera to the foot, along the floor
   int maskPixels = 0;       // photo pixels GrabCut gave the object
+  // A box: the share of the object's pixels its silhouette covers, and of its silhouette
+  // that the object covers (how well the box fits what GrabCut found).
+  double boxCoverage = 0, boxFill = 0;
 };
 
 struct StoodUp {

@@ -29,6 +29,7 @@
 #include "editor/edit/preview.h"
 #include "metrology/detect/snap.h"
 #include "metrology/object_measure.h"
+#include "modeling/stand_up.h"
 
 namespace pw::edit {
 
@@ -192,6 +193,8 @@ class EditMode : public app::AppMode {
   bool outlineKey(app::Shell& shell, int key);        // Enter, Backspace, Esc on a polygon being clicked (true: taken)
   void standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& outline);
   void deleteCutout(app::Shell& shell, size_t index);
+  void setCutoutShape(app::Shell& shell, size_t index, metrology::CutoutShape shape);
+  std::optional<modeling::StandingObject> checkStandUp(app::Shell& shell, const metrology::Cutout& cutout);
   void drawCutoutOverlay(ImDrawList* list) const;
   void drawCutouts(app::Shell& shell);
   void addCutoutsTrace(app::TraceRow& row) const;

@@ -122,6 +122,23 @@ bool EditMode::outlineKey(app::Shell& shell, int key) {
 
 // Stands the outline (photo pixels) up as a new cutout, one undo step, or says why not
 // and changes nothing.
+// `cutout` stood up now, alone and without the fill behind it, for its errors (the model
+// stands them all up again, on the preview's worker): the object, or nothing with the
+// reason said.
+std::optional<modeling::StandingObject> EditMode::checkStandUp(app::Shell& shell, const Cutout& cutout) {
+  if (!live_.measurement) {
+    shell.showMessage("stand up: the corners do not measure yet: " + live_.error);
+    return std::nullopt;
+  }
+  auto stood = modeling::standUpObjects(doc_->photo(), *live_.measurement, {cutout}, nullptr,
+                                        modeling::StandUpParts::kObjectsOnly);
+  if (!stood) {
+    shell.showMessage("stand up: " + stood.message());
+    return std::nullopt;
+  }
+  return std::move(stood->objects.front());
+}
+
 void EditMode::standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& outline) {
   glm::dvec2 lo = outline.front(), hi = outline.front();
   for (const glm::dvec2& p : outline) lo = glm::min(lo, p), hi = glm::max(hi, p);
@@ -129,26 +146,35 @@ void EditMode::standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& 
     shell.showMessage("stand up: outline the whole object (this outline is too small)");
     return;
   }
-  if (!live_.measurement) {
-    shell.showMessage("stand up: the corners do not measure yet: " + live_.error);
-    return;
-  }
   Shot after = doc_->shot();
   Cutout cutout{freeCutoutName(after), outline};
-  // Stood up now, alone and without the fill behind it, for its errors (the model
-  // stands them all up again, on the preview's worker).
-  auto stood = modeling::standUpObjects(doc_->photo(), *live_.measurement, {cutout}, nullptr,
-                                        modeling::StandUpParts::kObjectsOnly);
-  if (!stood) {
-    shell.showMessage("stand up: " + stood.message());
-    return;
-  }
-  const modeling::StandingObject& object = stood->objects.front();
+  const std::optional<modeling::StandingObject> object = checkStandUp(shell, cutout);
+  if (!object) return;
   char said[160];
   std::snprintf(said, sizeof said, "stood up %s: %.2f m high, %.2f m wide, %.1f m from the camera", cutout.name.c_str(),
-                object.heightM, object.widthM, object.distanceM);
+                object->heightM, object->widthM, object->distanceM);
   after.cutouts.push_back(std::move(cutout));
   applyEdit(shell, after, "stand up " + after.cutouts.back().name);
+  shell.showMessage(said);
+}
+
+// A standing object made a box or a flat cut-out again, one undo step, checked as a new
+// one is (its size said), or left as it was with the reason.
+void EditMode::setCutoutShape(app::Shell& shell, size_t index, metrology::CutoutShape shape) {
+  Shot after = doc_->shot();
+  Cutout& cutout = after.cutouts.at(index);
+  cutout.shape = shape;
+  const std::optional<modeling::StandingObject> object = checkStandUp(shell, cutout);
+  if (!object) return;
+  char said[200];
+  if (shape == metrology::CutoutShape::kBox) {
+    std::snprintf(said, sizeof said, "%s stands as a box: %.2f m wide, %.2f m deep, %.2f m high, %.1f m from the camera",
+                  cutout.name.c_str(), object->widthM, object->depthM, object->heightM, object->distanceM);
+  } else {
+    std::snprintf(said, sizeof said, "%s stands as a flat cut-out: %.2f m high, %.2f m wide, %.1f m from the camera",
+                  cutout.name.c_str(), object->heightM, object->widthM, object->distanceM);
+  }
+  applyEdit(shell, after, (shape == metrology::CutoutShape::kBox ? "box " : "flat ") + cutout.name);
   shell.showMessage(said);
 }
 
@@ -229,6 +255,14 @@ void EditMode::drawCutouts(app::Shell& shell) {
         applyEdit(shell, after, "name " + *typed);
       }
     }
+    ImGui::SameLine();
+    bool box = cutout.shape == metrology::CutoutShape::kBox;
+    if (ImGui::Checkbox("box", &box)) setCutoutShape(shell, i, box ? metrology::CutoutShape::kBox : metrology::CutoutShape::kFlat);
+    rememberWidget(("cutout " + std::to_string(i + 1) + " box").c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("a box on the floor (a cabinet, a bench, a radiator): its front, the side the photo\n"
+                        "sees and its top, at their measured width, depth and height; off: a flat cut-out");
+    }
     ImGui::PopID();
   }
 }
@@ -239,7 +273,8 @@ void EditMode::addCutoutsTrace(app::TraceRow& row) const {
     for (const Cutout& c : doc_->shot().cutouts) {
       ordered_json outline = ordered_json::array();
       for (const glm::dvec2& p : c.outlinePx) outline.push_back({p.x, p.y});
-      cutouts.push_back({{"name", c.name}, {"outline_px", outline}});
+      cutouts.push_back({{"name", c.name}, {"outline_px", outline},
+                         {"shape", c.shape == metrology::CutoutShape::kBox ? "box" : "flat"}});
     }
   }
   row.add("cutouts", cutouts);

@@ -2,9 +2,9 @@
 // on lavapipe: on the random corridor with a person (tests/groundtruth: TUNE seed 0, its
 // exact corners), U and a rectangle dragged around the person keep a cutout in the shot;
 // undo and redo take it away and back; a rectangle running off the photo's bottom edge is
-// refused with the reason and changes nothing; a name typed into the list is kept; the
-// saved copy carries the cutout and `photowalk build` stands the person up from it, as
-// tall as she is. Validation on (PW_VALIDATION=1).
+// refused with the reason and changes nothing; a name typed into the list is kept; its
+// "box" stands it up as a box, undoably; the saved copy carries the cutout and `photowalk
+// build` stands the person up from it, as tall as she is. Validation on (PW_VALIDATION=1).
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -121,12 +121,25 @@ TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
   // Named in the list, kept on Enter (one undo step).
   const auto& widgets = rows.at(29).raw.at("camera").at("widgets");
   ASSERT_TRUE(widgets.contains("cutout 1")) << widgets.dump();
+  ASSERT_TRUE(widgets.contains("cutout 1 box")) << widgets.dump();
   Script n;
   n.click(3, widgets["cutout 1"]).ctrlKeyHeld(5, "A").at(10, "type person").key(12, "ENTER");
-  n.at(15, "save-copy named.json").at(17, "quit");
-  const auto named = edit("name", n.str(), nullptr, "standing.json");
-  ASSERT_GE(named.size(), 17u);
+  n.at(15, "save-copy named.json");
+  // Stood up as a box instead (the list's "box"), undone and redone.
+  n.click(18, widgets["cutout 1 box"]).at(21, "capture standing_box.png");
+  n.ctrlKey(23, "Z").ctrlKey(26, "Z", true);
+  n.at(29, "save-copy boxed.json").at(31, "quit");
+  std::string boxOutput;
+  const auto named = edit("name", n.str(), &boxOutput, "standing.json");
+  ASSERT_GE(named.size(), 31u);
   EXPECT_EQ(named.at(16).raw.at("cutouts")[0].at("name"), "person") << named.at(16).raw.at("cutouts").dump();
+  EXPECT_EQ(named.at(16).raw.at("cutouts")[0].at("shape"), "flat");
+  EXPECT_EQ(named.at(21).raw.at("cutouts")[0].at("shape"), "box") << named.at(21).raw.at("cutouts").dump();
+  EXPECT_EQ(named.at(25).raw.at("cutouts")[0].at("shape"), "flat") << "undone";
+  EXPECT_EQ(named.at(28).raw.at("cutouts")[0].at("shape"), "box") << "redone";
+  EXPECT_NE(boxOutput.find("person stands as a box: "), std::string::npos) << boxOutput;
+  const nlohmann::json boxed = nlohmann::json::parse(std::ifstream(dir_ / "boxed.json"));
+  EXPECT_EQ(boxed.at("cutouts")[0].at("shape"), "box") << boxed.dump();
 
   // The saved copy stands her up in `build`: as tall as she is (1.945 m).
   const fs::path saved = dir_ / "named.json";

@@ -91,15 +91,15 @@ TEST(StandingObjects, APersonStandsWhereSheStandsAndAsTallAsSheIs) {
   // middle of her 0.32 m deep footprint.
   EXPECT_NEAR(cut.heightM, person.heightM, 0.01 * person.heightM);
   EXPECT_LT(glm::length(cut.footM - person.placeM), 0.6 * person.depthM);
-  EXPECT_NEAR(cut.cornersM[0].y, 0.0, 1e-9);
+  EXPECT_NEAR(cut.faces.at(0).cornersM[0].y, 0.0, 1e-9);
   EXPECT_GT(cut.widthM, 0.3);
   EXPECT_LT(cut.widthM, 1.0);
   // Upright, facing the photo's camera.
   const glm::dvec3 eye = model.corridors[0].measurement.pose.positionM;
-  EXPECT_NEAR(cut.normal.y, 0.0, 1e-12);
-  EXPECT_GT(glm::dot(cut.normal, glm::normalize(glm::dvec3(eye.x, 0.0, eye.z) - cut.footM)), 0.999);
+  EXPECT_NEAR(cut.faces.at(0).normal.y, 0.0, 1e-12);
+  EXPECT_GT(glm::dot(cut.faces.at(0).normal, glm::normalize(glm::dvec3(eye.x, 0.0, eye.z) - cut.footM)), 0.999);
   // The texture's alpha is the person: opaque in her middle, clear in the corners.
-  const engine::Image& image = cut.image;
+  const engine::Image& image = cut.faces.at(0).image;
   ASSERT_GT(image.width, 10);
   const auto alphaAt = [&](double s, double t) {
     const int x = std::clamp(static_cast<int>(s * image.width), 0, image.width - 1);
@@ -146,16 +146,16 @@ TEST(StandingObjects, TheWalkStopsAtHer) {
   const engine::CollisionWorld world = engine::CollisionWorld::fromScene(model.scene);
   // From 1 m before her, on the camera's side, walking 1.6 m straight through her at
   // chest height (the far wall is 0.9 m behind her).
-  const glm::vec3 start(cut.footM + 1.0 * cut.normal + glm::dvec3(0, 1.2, 0));
-  const glm::vec3 through(-1.6 * cut.normal);
+  const glm::vec3 start(cut.footM + 1.0 * cut.faces.at(0).normal + glm::dvec3(0, 1.2, 0));
+  const glm::vec3 through(-1.6 * cut.faces.at(0).normal);
   constexpr float kRadius = 0.25f;
   const glm::vec3 end = world.slideSphere(start, kRadius, through);
-  const double before = glm::dot(glm::dvec3(end) - cut.footM, cut.normal);
+  const double before = glm::dot(glm::dvec3(end) - cut.footM, cut.faces.at(0).normal);
   EXPECT_GE(before, kRadius - 1e-3) << "the walker passed through her";
   EXPECT_LT(before, kRadius + 0.05) << "the walker stopped short of her";
   // Without her, the same walk goes on.
   const engine::CollisionWorld empty = engine::CollisionWorld::fromScene(built(kFlatShot).scene);
-  EXPECT_LT(glm::dot(glm::dvec3(empty.slideSphere(start, kRadius, through)) - cut.footM, cut.normal), -0.5);
+  EXPECT_LT(glm::dot(glm::dvec3(empty.slideSphere(start, kRadius, through)) - cut.footM, cut.faces.at(0).normal), -0.5);
 }
 
 TEST(StandingObjects, VrmlAndGltfCarryHerWithHerAlpha) {
@@ -206,7 +206,7 @@ TEST(StandingObjects, CutOutsAreKeptWhileTheCornersMove) {
     ASSERT_TRUE(cached.ok() && fresh.ok());
     ASSERT_EQ(cached->objects.size(), 1u);
     EXPECT_EQ(cached->objects[0].heightM, fresh->objects[0].heightM);
-    EXPECT_EQ(cached->objects[0].image.rgba, fresh->objects[0].image.rgba);
+    EXPECT_EQ(cached->objects[0].faces.at(0).image.rgba, fresh->objects[0].faces.at(0).image.rgba);
     EXPECT_EQ(cv::norm(cached->behind, fresh->behind, cv::NORM_INF), 0.0);
   }
   EXPECT_EQ(cache.made(), 1) << "GrabCut and the fill once for three corner moves";
@@ -218,7 +218,7 @@ TEST(StandingObjects, CutOutsAreKeptWhileTheCornersMove) {
   auto withFill = standUpObjects(photo, *measuredNow, moved.cutouts);
   ASSERT_TRUE(alone.ok() && withFill.ok());
   EXPECT_TRUE(alone->behind.empty());
-  EXPECT_EQ(alone->objects[0].image.rgba, withFill->objects[0].image.rgba);
+  EXPECT_EQ(alone->objects[0].faces.at(0).image.rgba, withFill->objects[0].faces.at(0).image.rgba);
   EXPECT_EQ(cache.made(), 1) << "the check does not use the cache";
   // Another outline: cut again.
   metrology::Shot outlined = moved;

@@ -1,0 +1,195 @@
+// Box-like objects stood up as boxes (issue 25, part 3): cabinets of known size in a
+// synthetic corridor seen turned and tilted (tests/metrology/synthetic_corridor.h, ray
+// cast here with the boxes in it), measured from the exact corners, outlined 4 px
+// beyond their pixels as a person draws a rectangle. bench/standing_boxes.py gives the
+// figures on the random POV-Ray scenes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "metrology/measure.h"
+#include "modeling/shot_file.h"
+#include "modeling/stand_up.h"
+#include "tests/metrology/synthetic_corridor.h"
+
+namespace pw::modeling {
+namespace {
+namespace fs = std::filesystem;
+using metrology::testing::SyntheticCorridor;
+
+struct Cabinet {
+  glm::dvec3 lo, hi;  // model frame, lo.y = 0
+};
+
+// Where the ray first meets the box (slab method): the distance and the face's axis
+// (0 x, 1 y, 2 z), or a negative distance.
+std::pair<double, int> hitBox(const Cabinet& c, const glm::dvec3& o, const glm::dvec3& d) {
+  double near = -1e300, far = 1e300;
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(d[k]) < 1e-15) {
+      if (o[k] < c.lo[k] || o[k] > c.hi[k]) return {-1, -1};
+      continue;
+    }
+    double t0 = (c.lo[k] - o[k]) / d[k], t1 = (c.hi[k] - o[k]) / d[k];
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > near) near = t0, axis = k;
+    far = std::min(far, t1);
+  }
+  return near <= far && near > 0 ? std::pair{near, axis} : std::pair{-1.0, -1};
+}
+
+struct Scene {
+  SyntheticCorridor corridor;
+  std::vector<Cabinet> cabinets;
+  cv::Mat photo;
+  metrology::Measurement measurement;
+};
+
+// The corridor (walls, floor and ceiling each a shade of their own, the floor tiled)
+// with the cabinets in it, each face a shade of the cabinet's colour (lit from above and
+// the left), 3 x 3 rays a pixel.
+Scene makeScene() {
+  Scene s;
+  s.corridor.widthM = 2.6, s.corridor.heightM = 2.9, s.corridor.lengthM = 14;
+  s.corridor.cameraXM = 0.2, s.corridor.cameraZM = 3.0, s.corridor.cameraHeightM = 1.55;
+  s.corridor.yawDeg = 6, s.corridor.pitchDeg = -4, s.corridor.rollDeg = 1;
+  s.corridor.imageWidth = 900, s.corridor.imageHeight = 640, s.corridor.focalPx = 720;
+  const double w = s.corridor.widthM / 2;
+  s.cabinets = {{{-w, 0, -3.2}, {-w + 0.5, 1.8, -2.2}},     // on the left wall, its side well seen
+                {{w - 0.45, 0, -7.0}, {w, 1.2, -5.6}}};    // on the right wall, further
+  const SyntheticCorridor& c = s.corridor;
+  const cv::Vec3d faces[3] = {{60, 90, 200}, {90, 130, 235}, {40, 70, 160}};  // BGR: x, y (top), z faces
+  s.photo.create(c.imageHeight, c.imageWidth, CV_8UC3);
+  constexpr int kRays = 3;
+  for (int v = 0; v < c.imageHeight; ++v) {
+    for (int u = 0; u < c.imageWidth; ++u) {
+      cv::Vec3d sum(0, 0, 0);
+      for (int j = 0; j < kRays; ++j) {
+        for (int i = 0; i < kRays; ++i) {
+          const glm::dvec2 px(u - 0.5 + (i + 0.5) / kRays, v - 0.5 + (j + 0.5) / kRays);
+          const glm::dvec3 d = c.ray(px);
+          const metrology::testing::Hit wall = metrology::testing::castRay(c, c.eyeM(), d);
+          double nearest = 1e300;
+          cv::Vec3d colour(128, 128, 128);
+          if (wall.plane >= 0) {
+            const bool tile = wall.plane == static_cast<int>(metrology::Plane::kFloor) &&
+                              (static_cast<int>(wall.s * 8) + static_cast<int>(wall.t * 40)) % 2;
+            colour = cv::Vec3d(150 + 15 * wall.plane, 160 + 10 * wall.plane, 165 + 5 * wall.plane) * (tile ? 0.8 : 1.0);
+          }
+          for (const Cabinet& cab : s.cabinets) {
+            const auto [t, axis] = hitBox(cab, c.eyeM(), d);
+            if (t > 0 && t < nearest) nearest = t, colour = faces[axis];
+          }
+          sum += colour;
+        }
+      }
+      s.photo.at<cv::Vec3b>(v, u) = cv::Vec3b(sum * (1.0 / (kRays * kRays)));
+    }
+  }
+  auto measured = metrology::measureCorridor(c.shot());
+  EXPECT_TRUE(measured.ok()) << measured.message();
+  if (measured) s.measurement = *measured;
+  return s;
+}
+
+const Scene& scene() {
+  static const Scene s = makeScene();
+  return s;
+}
+
+metrology::Cutout outlineOf(const Scene& s, const Cabinet& cab, metrology::CutoutShape shape) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 p(i & 1 ? cab.hi.x : cab.lo.x, i & 2 ? cab.hi.y : 0.0, i & 4 ? cab.hi.z : cab.lo.z);
+    const glm::dvec2 px = s.corridor.project(p);
+    lo = glm::min(lo, px), hi = glm::max(hi, px);
+  }
+  lo -= 4.0, hi += 4.0;
+  return {"cabinet", {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, shape};
+}
+
+TEST(StandingBoxes, ACabinetStandsAsABoxOfItsSize) {
+  const Scene& s = scene();
+  for (size_t k = 0; k < s.cabinets.size(); ++k) {
+    SCOPED_TRACE("cabinet " + std::to_string(k));
+    const Cabinet& cab = s.cabinets[k];
+    auto stood = standUpObjects(s.photo, s.measurement, {outlineOf(s, cab, metrology::CutoutShape::kBox)});
+    ASSERT_TRUE(stood.ok()) << stood.message();
+    const StandingObject& box = stood->objects.at(0);
+    const glm::dvec3 size = cab.hi - cab.lo;
+    EXPECT_EQ(box.shape, metrology::CutoutShape::kBox);
+    EXPECT_NEAR(box.heightM, size.y, 0.02 * size.y);
+    EXPECT_NEAR(box.widthM, size.x, 0.08 * size.x);
+    if (box.depthSeen) {
+      EXPECT_NEAR(box.depthM, size.z, 2 * box.depthSigmaM);
+      EXPECT_LT(box.depthSigmaM, 0.5 * box.depthM);
+    } else {
+      EXPECT_DOUBLE_EQ(box.depthM, 0.5);
+    }
+    EXPECT_NEAR(box.footM.x, 0.5 * (cab.lo.x + cab.hi.x), 0.08 * size.x);
+    EXPECT_LE(std::abs(box.footM.x) + 0.5 * box.widthM, 0.5 * s.corridor.widthM + 1e-9) << "inside the walls";
+    // Five faces on the floor and up to its top; those the camera sees carry the photo
+    // with the cabinet's mask as alpha, the others its colour.
+    ASSERT_EQ(box.faces.size(), 5u);
+    int textured = 0;
+    for (const StandingFace& face : box.faces) {
+      for (const glm::dvec3& p : face.cornersM) EXPECT_TRUE(std::abs(p.y) < 1e-9 || std::abs(p.y - box.heightM) < 1e-9);
+      const glm::dvec3 middle = 0.25 * (face.cornersM[0] + face.cornersM[1] + face.cornersM[2] + face.cornersM[3]);
+      const bool seen = glm::dot(s.corridor.eyeM() - middle, face.normal) > 0;
+      EXPECT_EQ(!face.image.rgba.empty(), seen);
+      textured += seen;
+      // Corners counter-clockwise seen from outside: their normal is the face's.
+      const glm::dvec3 n = glm::cross(face.cornersM[1] - face.cornersM[0], face.cornersM[3] - face.cornersM[0]);
+      EXPECT_GT(glm::dot(glm::normalize(n), face.normal), 0.999);
+    }
+    EXPECT_GE(textured, 2) << "its front and the side towards the camera (and its top when the camera is above it)";
+  }
+  // The first cabinet's side is seen well: its depth is measured, within its ±.
+  auto first = standUpObjects(s.photo, s.measurement, {outlineOf(s, s.cabinets[0], metrology::CutoutShape::kBox)});
+  ASSERT_TRUE(first.ok());
+  EXPECT_TRUE(first->objects[0].depthSeen);
+  EXPECT_NEAR(first->objects[0].depthM, 1.0, 0.1);
+}
+
+TEST(StandingBoxes, TheSameOutlineFlatIsOneCutOutAsBefore) {
+  const Scene& s = scene();
+  auto flat = standUpObjects(s.photo, s.measurement, {outlineOf(s, s.cabinets[0], metrology::CutoutShape::kFlat)});
+  ASSERT_TRUE(flat.ok()) << flat.message();
+  const StandingObject& cut = flat->objects.at(0);
+  ASSERT_EQ(cut.faces.size(), 1u);
+  EXPECT_EQ(cut.depthM, 0.0);
+  EXPECT_FALSE(cut.faces[0].image.rgba.empty());
+  EXPECT_NEAR(cut.faces[0].normal.y, 0.0, 1e-12);
+}
+
+TEST(StandingBoxes, ShotFilesKeepTheShapeAndABadOneSaysWhy) {
+  const fs::path dir = fs::path(PW_BINARY_DIR) / "test-output" / "standing_box";
+  fs::create_directories(dir);
+  metrology::Shot shot = scene().corridor.shot();
+  shot.imagePath = "synthetic.png";
+  shot.cutouts = {outlineOf(scene(), scene().cabinets[0], metrology::CutoutShape::kBox),
+                  outlineOf(scene(), scene().cabinets[1], metrology::CutoutShape::kFlat)};
+  shot.cutouts[1].name = "other";
+  ASSERT_TRUE(writeShotFile(dir / "boxes.json", shot).ok());
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(dir / "boxes.json"));
+  EXPECT_EQ(doc["cutouts"][0]["shape"], "box");
+  EXPECT_FALSE(doc["cutouts"][1].contains("shape")) << "flat, the default, is not written";
+  auto again = readShotFile(dir / "boxes.json");
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ(again->cutouts, shot.cutouts);
+  nlohmann::json bad = doc;
+  bad["cutouts"][0]["shape"] = "cylinder";
+  std::ofstream(dir / "bad.json") << bad.dump();
+  auto read = readShotFile(dir / "bad.json");
+  ASSERT_FALSE(read.ok());
+  EXPECT_NE(read.message().find("cutouts[0]: its shape is \"flat\""), std::string::npos) << read.message();
+}
+
+}  // namespace
+}  // namespace pw::modeling
