@@ -398,8 +398,8 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       }
     }
     // Objects stood up: a vertical cut-out on the floor or a box, each face the photo sees
-    // textured with its alpha the object's mask, seen from both sides; the faces the
-    // photo does not see in the object's colour.
+    // textured with the photo, the others with the object's colour, all with the object's
+    // mask as alpha, seen from both sides.
     for (const StandingObject& object : model.standing) {
       const std::string label = "standing_" + fileSafe(object.name);
       static constexpr const char* kFaceNames[] = {"front", "back", "left", "right", "top"};
@@ -412,17 +412,12 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
         mesh.normals.assign(4, glm::vec3(face.normal));
         mesh.indices = {0, 1, 2, 0, 2, 3};
         mesh.solid = false;
-        if (face.image.rgba.empty()) {
-          if (!options.lit) mesh.colors.assign(4, glm::vec4(face.colour, 1.0f));
-          addShape(std::move(mesh), untextured(face.colour), faceLabel);
-          continue;
-        }
         mesh.texCoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
         auto texture = std::make_shared<engine::Texture>();
         texture->image = std::make_shared<engine::Image>(face.image);
         texture->url = model.name + "_" + faceLabel + ".png";
         texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
-        texture->sourceFromTexCoord = face.sourceFromTexCoord;
+        if (face.photo) texture->sourceFromTexCoord = face.sourceFromTexCoord;
         auto appearance = std::make_shared<engine::Appearance>();
         appearance->texture = texture;
         if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));

@@ -114,7 +114,10 @@ std::optional<glm::dvec3> onPlane(const Measurement& m, glm::dvec2 photoPx, glm:
 // alpha the object's mask widened by kHaloPx (`halo`): there the face shows the photo's own
 // pixels about the object, so that from the photo's camera its edge is the photo's (not a
 // blend with the fill behind it); from elsewhere, a thin halo.
-void textureFace(const cv::Mat& photo, const Measurement& m, const cv::Mat& halo, StandingFace& face) {
+// A face the photo's camera does not see (a box's back, its far side) takes the object's
+// colour instead, with the same alpha: where the box stands beyond the object's outline,
+// its faces are clear, so that from the photo's camera the model still gives the photo.
+void textureFace(const cv::Mat& photo, const Measurement& m, const cv::Mat& halo, bool seen, StandingFace& face) {
   const auto& c = face.cornersM;
   const double widthM = glm::length(c[1] - c[0]), heightM = glm::length(c[3] - c[0]);
   const glm::dvec3 right = (c[1] - c[0]) / widthM, up = (c[3] - c[0]) / heightM;
@@ -134,7 +137,12 @@ void textureFace(const cv::Mat& photo, const Measurement& m, const cv::Mat& halo
     }
   }
   cv::Mat colour, alpha, rgba;
-  cv::remap(photo, colour, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
+  if (seen) {
+    cv::remap(photo, colour, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
+  } else {
+    colour = cv::Mat(h, w, CV_8UC3, cv::Scalar(255.0 * face.colour.b, 255.0 * face.colour.g, 255.0 * face.colour.r));
+  }
+  face.photo = seen;
   cv::remap(halo, alpha, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(0));
   cv::cvtColor(colour, rgba, cv::COLOR_BGR2RGBA);
   cv::mixChannels(std::vector<cv::Mat>{alpha}, std::vector<cv::Mat>{rgba}, {0, 3});
@@ -476,7 +484,8 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   auto stood = cutout.shape == metrology::CutoutShape::kBox ? standUpBox(m, who, mask, box, std::move(object))
                                                              : standUpFlat(m, who, box, *foot, std::move(object));
   if (!stood) return stood;
-  // The faces the photo's camera sees carry the photo; the others the object's colour.
+  // The faces the photo's camera sees carry the photo; the others the object's colour;
+  // all of them the object's outline as alpha.
   const cv::Scalar mean = cv::mean(photo, mask);
   const glm::vec3 colour(static_cast<float>(mean[2] / 255), static_cast<float>(mean[1] / 255), static_cast<float>(mean[0] / 255));
   cv::Mat halo;
@@ -484,9 +493,8 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   for (StandingFace& face : stood->faces) {
     face.colour = colour;
     const glm::dvec3 middle = 0.25 * (face.cornersM[0] + face.cornersM[1] + face.cornersM[2] + face.cornersM[3]);
-    if (stood->shape == metrology::CutoutShape::kFlat || glm::dot(m.pose.positionM - middle, face.normal) > 1e-6) {
-      textureFace(photo, m, halo, face);
-    }
+    const bool seen = stood->shape == metrology::CutoutShape::kFlat || glm::dot(m.pose.positionM - middle, face.normal) > 1e-6;
+    textureFace(photo, m, halo, seen, face);
   }
   return stood;
 }
@@ -551,6 +559,35 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
     out.objects.push_back(std::move(*object));
   }
   out.behind = cut.behind;
+  // A box's outline need not hold every pixel of its object (a box is not the object's
+  // exact shape): those it leaves out stay painted where the photo shows them, not
+  // filled, so that from the photo's camera the model still gives the photo.
+  if (!cut.behind.empty()) {
+    cv::Mat outside;
+    for (size_t i = 0; i < cutouts.size(); ++i) {
+      if (out.objects[i].shape != metrology::CutoutShape::kBox) continue;
+      std::vector<cv::Point2f> corners;
+      for (const StandingFace& face : out.objects[i].faces) {
+        for (const glm::dvec3& c : face.cornersM) {
+          const glm::dvec3 q = metrology::projectToPixel(measurement.camera, measurement.pose, c);
+          const glm::dvec2 px = metrology::distortPixel(measurement.camera, glm::dvec2(q));
+          corners.emplace_back(static_cast<float>(px.x), static_cast<float>(px.y));
+        }
+      }
+      std::vector<cv::Point2f> hull;
+      cv::convexHull(corners, hull);
+      std::vector<cv::Point> poly;
+      for (const cv::Point2f& p : hull) poly.emplace_back(cvRound(p.x * 16), cvRound(p.y * 16));
+      cv::Mat inside = cv::Mat::zeros(photo.size(), CV_8U);
+      cv::fillConvexPoly(inside, poly, cv::Scalar(255), cv::LINE_8, 4);
+      cv::Mat left = cut.masks[i] & ~inside;
+      outside = outside.empty() ? left : (outside | left);
+    }
+    if (!outside.empty() && cv::countNonZero(outside) > 0) {
+      out.behind = cut.behind.clone();
+      photo.copyTo(out.behind, outside);
+    }
+  }
   return out;
 }
 

@@ -36,13 +36,15 @@ namespace pw::modeling {
 struct StandingFace {
   std::array<glm::dvec3, 4> cornersM{};
   glm::dvec3 normal{0.0};  // outwards
-  // RGBA: the photo on the face, alpha the object's mask; empty where the photo's camera
-  // does not see the face (a box's back and far side), which is then `colour`.
+  // RGBA: the photo on the face, alpha the object's mask as the photo's camera sees it
+  // through the face; where that camera does not see the face (a box's back and far
+  // side: `photo` false), `colour` with the same alpha.
   engine::Image image;
+  bool photo = true;
   // Its texture coordinates (s, t, 1), t = 0 at the bottom, to the photo's pinhole pixels
   // (engine::Texture::sourceFromTexCoord): the renderer reads it as the photo was seen.
   glm::mat3 sourceFromTexCoord{1.0f};
-  glm::vec3 colour{0.5f};  // linear RGB 0-1: the object's mean colour in the photo
+  glm::vec3 colour{0.5f};  // RGB 0-1: the object's mean colour in the photo
 };
 
 struct StandingObject {

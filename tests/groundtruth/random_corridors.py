@@ -1075,6 +1075,8 @@ def make_views(seed, outdir, threads=2):
 # The objects a person stands up by default (bench/standing_views.py, the groundtruth
 # target): the floor's free-standing ones.
 STANDING_KINDS = {"person", "plant", "bin"}
+# Kinds stood up as boxes when asked for (standing_views.py --kinds ...,cabinet).
+BOX_KINDS = {"cabinet"}
 STANDING_MIN_PIXELS = 150
 STANDING_MARGIN_PX = 4
 
@@ -1122,7 +1124,8 @@ def write_standing(seed, outdir, kinds=STANDING_KINDS):
         b = boxes.get(ob["mask_id"])
         if ob["kind"] not in kinds or not b or b[4] < STANDING_MIN_PIXELS or b[3] + STANDING_MARGIN_PX >= h - 1:
             continue
-        foot = ob["keypoints_px"].get("feet") or ob["keypoints_px"].get("base")
+        kp = ob["keypoints_px"]
+        foot = kp.get("feet") or kp.get("base") or max((p for k, p in kp.items() if "bottom" in k), key=lambda p: p[1])
         if b[3] < foot[1] - 1:
             continue
         x, _, z = ob["place_m"]  # on this corridor's floor (not in a hall beyond its end)
@@ -1130,7 +1133,10 @@ def write_standing(seed, outdir, kinds=STANDING_KINDS):
             continue
         m = STANDING_MARGIN_PX
         x0, y0, x1, y1 = max(0, b[0] - m), max(0, b[1] - m), min(w - 1, b[2] + m), min(h - 1, b[3] + m)
-        cutouts.append({"name": "%s_%d" % (ob["kind"], ob["id"]), "outline_px": [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]})
+        cutout = {"name": "%s_%d" % (ob["kind"], ob["id"]), "outline_px": [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]}
+        if ob["kind"] in BOX_KINDS:
+            cutout["shape"] = "box"
+        cutouts.append(cutout)
     standing = base + "_standing.json"
     if cutouts:
         shot = dict(ans)

@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "metrology/measure.h"
 #include "modeling/shot_file.h"
@@ -134,15 +135,16 @@ TEST(StandingBoxes, ACabinetStandsAsABoxOfItsSize) {
     }
     EXPECT_NEAR(box.footM.x, 0.5 * (cab.lo.x + cab.hi.x), 0.08 * size.x);
     EXPECT_LE(std::abs(box.footM.x) + 0.5 * box.widthM, 0.5 * s.corridor.widthM + 1e-9) << "inside the walls";
-    // Five faces on the floor and up to its top; those the camera sees carry the photo
-    // with the cabinet's mask as alpha, the others its colour.
+    // Five faces on the floor and up to its top; those the camera sees carry the photo,
+    // the others the cabinet's colour, all with its mask as alpha.
     ASSERT_EQ(box.faces.size(), 5u);
     int textured = 0;
     for (const StandingFace& face : box.faces) {
       for (const glm::dvec3& p : face.cornersM) EXPECT_TRUE(std::abs(p.y) < 1e-9 || std::abs(p.y - box.heightM) < 1e-9);
       const glm::dvec3 middle = 0.25 * (face.cornersM[0] + face.cornersM[1] + face.cornersM[2] + face.cornersM[3]);
       const bool seen = glm::dot(s.corridor.eyeM() - middle, face.normal) > 0;
-      EXPECT_EQ(!face.image.rgba.empty(), seen);
+      EXPECT_EQ(face.photo, seen);
+      EXPECT_FALSE(face.image.rgba.empty()) << "the object's outline as alpha on every face";
       textured += seen;
       // Corners counter-clockwise seen from outside: their normal is the face's.
       const glm::dvec3 n = glm::cross(face.cornersM[1] - face.cornersM[0], face.cornersM[3] - face.cornersM[0]);
@@ -189,6 +191,51 @@ TEST(StandingBoxes, ShotFilesKeepTheShapeAndABadOneSaysWhy) {
   auto read = readShotFile(dir / "bad.json");
   ASSERT_FALSE(read.ok());
   EXPECT_NE(read.message().find("cutouts[0]: its shape is \"flat\""), std::string::npos) << read.message();
+}
+
+}  // namespace
+}  // namespace pw::modeling
+
+namespace pw::modeling {
+namespace {
+
+// A box is not its object's exact shape: the object's pixels its outline leaves out
+// stay painted where the photo shows them (not filled), so that from the photo's camera
+// the model gives the photo back; those inside it are filled.
+TEST(StandingBoxes, WhatTheBoxLeavesOutOfItsObjectStaysPainted) {
+  const Scene& s = scene();
+  // A post standing on the cabinet, in its colour: GrabCut keeps it with the cabinet,
+  // the box does not reach up to it.
+  cv::Mat photo = s.photo.clone();
+  metrology::Cutout outline = outlineOf(s, s.cabinets[0], metrology::CutoutShape::kBox);
+  const glm::dvec2 top = s.corridor.project({s.cabinets[0].lo.x + 0.25, s.cabinets[0].hi.y, s.cabinets[0].hi.z});
+  const cv::Rect post(static_cast<int>(top.x) - 12, static_cast<int>(top.y) - 50, 24, 52);
+  photo(post).setTo(cv::Scalar(60, 90, 200));
+  for (int k : {0, 1}) outline.outlinePx[k].y = std::min(outline.outlinePx[k].y, post.y - 4.0);  // its top
+  auto stood = standUpObjects(photo, s.measurement, {outline});
+  ASSERT_TRUE(stood.ok()) << stood.message();
+  std::vector<cv::Point2f> corners, hull;
+  for (const StandingFace& face : stood->objects.at(0).faces) {
+    for (const glm::dvec3& c : face.cornersM) {
+      const glm::dvec2 px = s.corridor.project(c);
+      corners.emplace_back(static_cast<float>(px.x), static_cast<float>(px.y));
+    }
+  }
+  cv::convexHull(corners, hull);
+  int outside = 0, kept = 0, inside = 0, filled = 0;
+  for (int v = 0; v < photo.rows; ++v) {
+    for (int u = 0; u < photo.cols; ++u) {
+      const bool object = post.contains({u, v}) || hitBox(s.cabinets[0], s.corridor.eyeM(), s.corridor.ray({u, v})).first > 0;
+      if (!object) continue;
+      const double from = cv::pointPolygonTest(hull, cv::Point2f(static_cast<float>(u), static_cast<float>(v)), true);
+      const bool same = stood->behind.at<cv::Vec3b>(v, u) == photo.at<cv::Vec3b>(v, u);
+      if (from < -2) ++outside, kept += same;
+      if (from > 2) ++inside, filled += !same;
+    }
+  }
+  EXPECT_GT(outside, 200) << "the post stands above the box";
+  EXPECT_EQ(kept, outside) << "the post stays painted behind";
+  EXPECT_GT(filled, 0.9 * inside) << "the cabinet's pixels inside its box are filled";
 }
 
 }  // namespace
