@@ -28,6 +28,8 @@ constexpr double kMinPieceShare = 0.02;
 constexpr int kHaloPx = 1;
 constexpr int kFillMarginPx = kHaloPx - 1;
 constexpr double kFillRadiusPx = 5.0;
+// A box's pixels this near its outline in the photo keep the photo behind them.
+constexpr int kSeamPx = 2;
 // Cut-out texels per photo pixel at the object's distance (a second sampling blurs less).
 constexpr double kTexelsPerPhotoPixel = 2.0;
 constexpr int kMaxTextureSide = 4096;
@@ -560,8 +562,9 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
   }
   out.behind = cut.behind;
   // A box's outline need not hold every pixel of its object (a box is not the object's
-  // exact shape): those it leaves out stay painted where the photo shows them, not
-  // filled, so that from the photo's camera the model still gives the photo.
+  // exact shape): those it leaves out, and those along its edge, stay painted where the
+  // photo shows them, not filled, so that from the photo's camera the model still gives
+  // the photo.
   if (!cut.behind.empty()) {
     cv::Mat outside;
     for (size_t i = 0; i < cutouts.size(); ++i) {
@@ -580,6 +583,9 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
       for (const cv::Point2f& p : hull) poly.emplace_back(cvRound(p.x * 16), cvRound(p.y * 16));
       cv::Mat inside = cv::Mat::zeros(photo.size(), CV_8U);
       cv::fillConvexPoly(inside, poly, cv::Scalar(255), cv::LINE_8, 4);
+      // Along the outline's edge the box covers a pixel only in part (the renderer blends
+      // it with what lies behind): those keep the photo's pixel behind too.
+      cv::erode(inside, inside, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kSeamPx + 1, 2 * kSeamPx + 1)));
       cv::Mat left = cut.masks[i] & ~inside;
       outside = outside.empty() ? left : (outside | left);
     }
