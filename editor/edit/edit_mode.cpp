@@ -3,7 +3,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -46,7 +48,8 @@ std::vector<app::ReplayVerb> EditMode::replayVerbs(const fs::path& scriptDir) {
              if (path.is_relative()) path = scriptDir / path;
              return std::any(SaveCopyEvent{path});
            }},
-          {"preview-wait", [](std::istream&) -> Result<std::any> { return std::any(PreviewWaitEvent{}); }}};
+          {"preview-wait", [](std::istream&) -> Result<std::any> { return std::any(PreviewWaitEvent{}); }},
+          {"boxes-wait", [](std::istream&) -> Result<std::any> { return std::any(BoxesWaitEvent{}); }}};
   for (app::ReplayVerb& verb : filesReplayVerbs(scriptDir)) verbs.push_back(std::move(verb));
   return verbs;
 }
@@ -483,6 +486,18 @@ Status EditMode::onReplayEvent(app::Shell& shell, const app::ModeEvent& event) {
     }
     return {};
   }
+  if (std::any_cast<BoxesWaitEvent>(&event.value)) {
+    if (!doc_) return makeError("boxes-wait: no file is open");
+    remeasure();
+    updateBoxFits();
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (boxFitWorker_ && boxFitWorker_->busy()) {
+      if (std::chrono::steady_clock::now() > until) return makeError("boxes-wait: no boxes after 120 s");
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    updateBoxFits();
+    return {};
+  }
   const auto* copy = std::any_cast<SaveCopyEvent>(&event.value);
   if (!copy) return AppMode::onReplayEvent(shell, event);
   if (!doc_) return makeError("save-copy: no file is open");
@@ -513,6 +528,7 @@ void EditMode::update(app::Shell& shell, double stepS) {
   if (snapWorker_) {
     for (SnapDone& done : snapWorker_->takeDone()) snapShown_ = std::move(done);
   }
+  updateBoxFits();
   if (doc_) preview_.update(shell, doc_->modelShot(), live_.measurement ? std::string() : live_.error.empty() ? std::string("the corners cannot be measured") : live_.error,
                               drag_.has_value());
   updateFiles(shell, stepS);

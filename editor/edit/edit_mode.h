@@ -52,6 +52,10 @@ struct SaveCopyEvent {
 // model of the corners as they are (tests capture it; a frame waits, so only there).
 struct PreviewWaitEvent {};
 
+// `boxes-wait`: the replay event that waits until the boxes drawn on the photo are those
+// of the shot as it is (tests; a frame waits, so only there).
+struct BoxesWaitEvent {};
+
 class EditMode : public app::AppMode {
  public:
   // `walk` is the shell's walk mode for this editor (borrowed).
@@ -241,6 +245,26 @@ class EditMode : public app::AppMode {
   std::optional<SnapRequest> snapRequest();  // for the corner being dragged, where it is
   void updateSnap();
   std::optional<glm::dvec2> currentSnap() const;  // the ring's answer, when it is for where the corner is
+  // The boxes of the shot's box cutouts, fitted to the photo on a worker whenever the
+  // shot changes (GrabCut and the fit: about half a second on a large photo), drawn on
+  // the photo while they are the shot's as it is. Each box: its front's corners
+  // (bottom-left, bottom-right, top-right, top-left as the camera sees it), then the back's
+  // behind each.
+  struct BoxFitRequest {
+    metrology::Shot shot;
+    cv::Mat photo;
+    metrology::Measurement measurement;
+  };
+  struct BoxFitDone {
+    metrology::Shot shot;
+    std::vector<std::pair<std::string, std::array<glm::dvec3, 8>>> boxes;
+  };
+  std::unique_ptr<LatestWorker<BoxFitRequest, BoxFitDone>> boxFitWorker_;
+  std::optional<metrology::Shot> boxFitAsked_;
+  std::optional<BoxFitDone> boxFitShown_;
+  void updateBoxFits();
+  // The shown box of the cutout named so, in photo pixels (nullopt: none for the shot as it is).
+  std::optional<std::array<glm::dvec2, 8>> shownBoxPx(const std::string& name) const;
   std::optional<glm::dvec2> panFrom_;  // the cursor when a pan began or last moved
   int panButton_ = -1;
   glm::dvec2 cursorPx_{-1.0};

@@ -186,8 +186,62 @@ void EditMode::deleteCutout(app::Shell& shell, size_t index) {
   applyEdit(shell, after, "delete " + name);
 }
 
+void EditMode::updateBoxFits() {
+  if (boxFitWorker_) {
+    for (BoxFitDone& done : boxFitWorker_->takeDone()) boxFitShown_ = std::move(done);
+  }
+  if (!doc_ || !live_.measurement) return;
+  const Shot& shot = doc_->shot();
+  if (std::none_of(shot.cutouts.begin(), shot.cutouts.end(), [](const Cutout& c) { return c.shape == metrology::CutoutShape::kBox; })) return;
+  if (boxFitAsked_ && *boxFitAsked_ == shot) return;
+  boxFitAsked_ = shot;
+  if (!boxFitWorker_) {
+    boxFitWorker_ = std::make_unique<LatestWorker<BoxFitRequest, BoxFitDone>>([](BoxFitRequest& r, const auto& emit, const auto&) {
+      BoxFitDone done{std::move(r.shot), {}};
+      for (const Cutout& cutout : done.shot.cutouts) {
+        if (cutout.shape != metrology::CutoutShape::kBox) continue;
+        // Each alone: one that cannot stand up (its message came at the check) draws nothing.
+        auto stood = modeling::standUpObjects(r.photo, r.measurement, {cutout}, nullptr, modeling::StandUpParts::kObjectsOnly);
+        if (!stood || stood->objects.front().faces.size() < 2) continue;
+        const auto& front = stood->objects.front().faces[0].cornersM;
+        const auto& back = stood->objects.front().faces[1].cornersM;  // seen from behind: mirrored
+        done.boxes.push_back({cutout.name, {front[0], front[1], front[2], front[3], back[1], back[0], back[3], back[2]}});
+      }
+      emit(std::move(done));
+    });
+  }
+  boxFitWorker_->request({shot, doc_->photo(), *live_.measurement});
+}
+
+std::optional<std::array<glm::dvec2, 8>> EditMode::shownBoxPx(const std::string& name) const {
+  if (!doc_ || !live_.measurement || !boxFitShown_ || !(boxFitShown_->shot == doc_->shot())) return std::nullopt;
+  for (const auto& [boxName, corners] : boxFitShown_->boxes) {
+    if (boxName != name) continue;
+    std::array<glm::dvec2, 8> px{};
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 q = metrology::projectToPixel(live_.measurement->camera, live_.measurement->pose, corners[k]);
+      if (!(q.z > 0)) return std::nullopt;
+      px[k] = metrology::distortPixel(live_.measurement->camera, glm::dvec2(q));
+    }
+    return px;
+  }
+  return std::nullopt;
+}
+
 void EditMode::drawCutoutOverlay(ImDrawList* list) const {
   if (!doc_) return;
+  // Each box as fitted: its twelve edges.
+  for (const Cutout& cutout : doc_->shot().cutouts) {
+    const auto box = cutout.shape == metrology::CutoutShape::kBox ? shownBoxPx(cutout.name) : std::nullopt;
+    if (!box) continue;
+    for (int k = 0; k < 4; ++k) {
+      for (const auto& [a, b] : {std::pair{k, (k + 1) % 4}, std::pair{4 + k, 4 + (k + 1) % 4}, std::pair{k, 4 + k}}) {
+        const ImVec2 from = im(canvas_.toWindow((*box)[a])), to = im(canvas_.toWindow((*box)[b]));
+        list->AddLine(from, to, kCutoutShadow, 2.5f);
+        list->AddLine(from, to, kCutoutColour, 1.0f);
+      }
+    }
+  }
   for (const Cutout& cutout : doc_->shot().cutouts) {
     std::vector<ImVec2> ring;
     for (const glm::dvec2& p : cutout.outlinePx) ring.push_back(im(canvas_.toWindow(p)));
@@ -273,8 +327,14 @@ void EditMode::addCutoutsTrace(app::TraceRow& row) const {
     for (const Cutout& c : doc_->shot().cutouts) {
       ordered_json outline = ordered_json::array();
       for (const glm::dvec2& p : c.outlinePx) outline.push_back({p.x, p.y});
-      cutouts.push_back({{"name", c.name}, {"outline_px", outline},
-                         {"shape", c.shape == metrology::CutoutShape::kBox ? "box" : "flat"}});
+      ordered_json entry = {{"name", c.name}, {"outline_px", outline},
+                            {"shape", c.shape == metrology::CutoutShape::kBox ? "box" : "flat"}};
+      if (const auto box = c.shape == metrology::CutoutShape::kBox ? shownBoxPx(c.name) : std::nullopt) {
+        ordered_json corners = ordered_json::array();
+        for (const glm::dvec2& p : *box) corners.push_back({p.x, p.y});
+        entry["box_px"] = corners;  // as drawn: the front's four, then the back's
+      }
+      cutouts.push_back(std::move(entry));
     }
   }
   row.add("cutouts", cutouts);

@@ -126,7 +126,7 @@ TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
   n.click(3, widgets["cutout 1"]).ctrlKeyHeld(5, "A").at(10, "type person").key(12, "ENTER");
   n.at(15, "save-copy named.json");
   // Stood up as a box instead (the list's "box"), undone and redone.
-  n.click(18, widgets["cutout 1 box"]).at(21, "capture standing_box.png");
+  n.click(18, widgets["cutout 1 box"]).at(21, "boxes-wait").at(22, "capture standing_box.png");
   n.ctrlKey(23, "Z").ctrlKey(26, "Z", true);
   n.at(29, "save-copy boxed.json").at(31, "quit");
   std::string boxOutput;
@@ -135,6 +135,17 @@ TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
   EXPECT_EQ(named.at(16).raw.at("cutouts")[0].at("name"), "person") << named.at(16).raw.at("cutouts").dump();
   EXPECT_EQ(named.at(16).raw.at("cutouts")[0].at("shape"), "flat");
   EXPECT_EQ(named.at(21).raw.at("cutouts")[0].at("shape"), "box") << named.at(21).raw.at("cutouts").dump();
+  // The box as fitted, drawn on the photo: its eight corners about the person's outline.
+  const nlohmann::json drawn = named.at(22).raw.at("cutouts")[0];
+  ASSERT_TRUE(drawn.contains("box_px")) << drawn.dump();
+  ASSERT_EQ(drawn["box_px"].size(), 8u);
+  for (const nlohmann::json& p : drawn["box_px"]) {
+    EXPECT_GT(p[0].get<double>(), from.x - 20);
+    EXPECT_LT(p[0].get<double>(), to.x + 20);
+    EXPECT_GT(p[1].get<double>(), from.y - 20);
+    EXPECT_LT(p[1].get<double>(), to.y + 20);
+  }
+  EXPECT_FALSE(named.at(16).raw.at("cutouts")[0].contains("box_px")) << "a flat cut-out has none";
   EXPECT_EQ(named.at(25).raw.at("cutouts")[0].at("shape"), "flat") << "undone";
   EXPECT_EQ(named.at(28).raw.at("cutouts")[0].at("shape"), "box") << "redone";
   EXPECT_NE(boxOutput.find("person stands as a box: "), std::string::npos) << boxOutput;
