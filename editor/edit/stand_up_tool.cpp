@@ -196,12 +196,15 @@ void EditMode::updateBoxFits() {
   if (boxFitAsked_ && *boxFitAsked_ == shot) return;
   boxFitAsked_ = shot;
   if (!boxFitWorker_) {
-    boxFitWorker_ = std::make_unique<LatestWorker<BoxFitRequest, BoxFitDone>>([](BoxFitRequest& r, const auto& emit, const auto&) {
+    // The worker's own cut-outs: GrabCut once per outline, so that a corner dragged only
+    // fits the boxes again.
+    auto cutOuts = std::make_shared<modeling::CutOutCache>();
+    boxFitWorker_ = std::make_unique<LatestWorker<BoxFitRequest, BoxFitDone>>([cutOuts](BoxFitRequest& r, const auto& emit, const auto&) {
       BoxFitDone done{std::move(r.shot), {}};
       for (const Cutout& cutout : done.shot.cutouts) {
         if (cutout.shape != metrology::CutoutShape::kBox) continue;
         // Each alone: one that cannot stand up (its message came at the check) draws nothing.
-        auto stood = modeling::standUpObjects(r.photo, r.measurement, {cutout}, nullptr, modeling::StandUpParts::kObjectsOnly);
+        auto stood = modeling::standUpObjects(r.photo, r.measurement, {cutout}, cutOuts.get());
         if (!stood || stood->objects.front().faces.size() < 2) continue;
         const auto& front = stood->objects.front().faces[0].cornersM;
         const auto& back = stood->objects.front().faces[1].cornersM;  // seen from behind: mirrored
