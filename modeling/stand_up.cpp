@@ -261,6 +261,29 @@ std::array<glm::dvec3, 8> boxCorners(const BoxM& b) {
   return c;
 }
 
+// The convex hull, in photo pixels, of model-frame points as the photo's camera sees
+// them; empty where one of them is behind the camera.
+std::vector<cv::Point2f> hullInPhoto(const Measurement& m, const std::vector<glm::dvec3>& points) {
+  std::vector<cv::Point2f> pts;
+  for (const glm::dvec3& c : points) {
+    const glm::dvec3 q = metrology::projectToPixel(m.camera, m.pose, c);
+    if (!(q.z > 1e-3)) return {};
+    const glm::dvec2 px = metrology::distortPixel(m.camera, glm::dvec2(q));
+    pts.emplace_back(static_cast<float>(px.x), static_cast<float>(px.y));
+  }
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(pts, hull);
+  return hull;
+}
+
+// A convex polygon filled into `mask` (255), its corners at sixteenth-pixel precision.
+void fillHull(cv::Mat& mask, const std::vector<cv::Point2f>& hull) {
+  if (hull.size() < 3) return;
+  std::vector<cv::Point> poly;
+  for (const cv::Point2f& p : hull) poly.emplace_back(cvRound(p.x * 16), cvRound(p.y * 16));
+  cv::fillConvexPoly(mask, poly, cv::Scalar(255), cv::LINE_8, 4);
+}
+
 // How a box's outline in the photo covers the object's mask, on a region of the photo
 // shrunk to about kFitPixels (the box's outline is the convex hull of its corners).
 class BoxSilhouette {
@@ -277,23 +300,18 @@ class BoxSilhouette {
   // The share of the mask the box covers and of the box the mask fills; nullopt where a
   // corner is behind the camera.
   std::optional<std::pair<double, double>> cover(const BoxM& b) const {
-    std::vector<cv::Point2f> pts;
-    for (const glm::dvec3& c : boxCorners(b)) {
-      const glm::dvec3 q = metrology::projectToPixel(m_.camera, m_.pose, c);
-      if (!(q.z > 1e-3)) return std::nullopt;
-      const glm::dvec2 px = metrology::distortPixel(m_.camera, glm::dvec2(q));
-      // (Half a shrunk pixel right and down of where a resize puts the photo pixel's centre,
-      // (x + 0.5) s - 0.5: put there, the held-out figures moved both ways, width 5.7% ->
-      // 4.7%, depth 13.9% -> 8.2%, TUNE's width 59 -> 57 within 10%, and the synthetic
-      // test's far cabinet 0.458 -> 0.493 m wide for 0.45; left as measured.)
-      pts.emplace_back(static_cast<float>((px.x + 0.5 - roi_.x) * scale_), static_cast<float>((px.y + 0.5 - roi_.y) * scale_));
+    const std::array<glm::dvec3, 8> corners = boxCorners(b);
+    std::vector<cv::Point2f> hull = hullInPhoto(m_, {corners.begin(), corners.end()});
+    if (hull.empty()) return std::nullopt;
+    // (Half a shrunk pixel right and down of where a resize puts the photo pixel's centre,
+    // (x + 0.5) s - 0.5: put there, the held-out figures moved both ways, width 5.7% ->
+    // 4.7%, depth 13.9% -> 8.2%, TUNE's width 59 -> 57 within 10%, and the synthetic
+    // test's far cabinet 0.458 -> 0.493 m wide for 0.45; left as measured.)
+    for (cv::Point2f& p : hull) {
+      p = {static_cast<float>((p.x + 0.5 - roi_.x) * scale_), static_cast<float>((p.y + 0.5 - roi_.y) * scale_)};
     }
-    std::vector<cv::Point2f> hull;
-    cv::convexHull(pts, hull);
-    std::vector<cv::Point> poly;
-    for (const cv::Point2f& p : hull) poly.emplace_back(cvRound(p.x * 16), cvRound(p.y * 16));
     cv::Mat drawn = cv::Mat::zeros(mask_.size(), CV_8U);
-    cv::fillConvexPoly(drawn, poly, cv::Scalar(255), cv::LINE_8, 4);
+    fillHull(drawn, hull);
     const int both = cv::countNonZero(drawn & mask_);
     const double area = std::abs(cv::contourArea(hull)) + 1.0;
     return std::pair{both / std::max(1.0, static_cast<double>(maskCount_)), std::min(1.0, both / area)};
@@ -572,20 +590,10 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
     cv::Mat outside;
     for (size_t i = 0; i < cutouts.size(); ++i) {
       if (out.objects[i].shape != metrology::CutoutShape::kBox) continue;
-      std::vector<cv::Point2f> corners;
-      for (const StandingFace& face : out.objects[i].faces) {
-        for (const glm::dvec3& c : face.cornersM) {
-          const glm::dvec3 q = metrology::projectToPixel(measurement.camera, measurement.pose, c);
-          const glm::dvec2 px = metrology::distortPixel(measurement.camera, glm::dvec2(q));
-          corners.emplace_back(static_cast<float>(px.x), static_cast<float>(px.y));
-        }
-      }
-      std::vector<cv::Point2f> hull;
-      cv::convexHull(corners, hull);
-      std::vector<cv::Point> poly;
-      for (const cv::Point2f& p : hull) poly.emplace_back(cvRound(p.x * 16), cvRound(p.y * 16));
+      std::vector<glm::dvec3> corners;
+      for (const StandingFace& face : out.objects[i].faces) corners.insert(corners.end(), face.cornersM.begin(), face.cornersM.end());
       cv::Mat inside = cv::Mat::zeros(photo.size(), CV_8U);
-      cv::fillConvexPoly(inside, poly, cv::Scalar(255), cv::LINE_8, 4);
+      fillHull(inside, hullInPhoto(measurement, corners));
       // Along the outline's edge the box covers a pixel only in part (the renderer blends
       // it with what lies behind): those keep the photo's pixel behind too.
       cv::erode(inside, inside, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kSeamPx + 1, 2 * kSeamPx + 1)));
