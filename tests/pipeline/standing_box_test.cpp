@@ -13,7 +13,10 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "engine/scene/collision.h"
 #include "metrology/measure.h"
+#include "modeling/corridor_model.h"
+#include "modeling/layout.h"
 #include "modeling/shot_file.h"
 #include "modeling/stand_up.h"
 #include "tests/metrology/synthetic_corridor.h"
@@ -157,6 +160,35 @@ TEST(StandingBoxes, ACabinetStandsAsABoxOfItsSize) {
   ASSERT_TRUE(first.ok());
   EXPECT_TRUE(first->objects[0].depthSeen);
   EXPECT_NEAR(first->objects[0].depthM, 1.0, 0.1);
+}
+
+// The walk stops at the box, on its front and on its side, and the model says what it stood up.
+TEST(StandingBoxes, TheWalkStopsAtTheBox) {
+  const Scene& s = scene();
+  auto model = makeCorridorModel("boxes", s.photo, s.measurement,
+                                 {outlineOf(s, s.cabinets[0], metrology::CutoutShape::kBox)}, false, {});
+  ASSERT_TRUE(model.ok()) << model.message();
+  auto plan = planBuilding(chainLayout({"boxes.json"}), {model->box});
+  ASSERT_TRUE(plan.ok()) << plan.message();
+  const engine::Scene built = makeBuildingScene({*model}, *plan, {});
+  bool said = false;
+  for (const std::string& line : built.info) said = said || line.rfind("stood up: cabinet (boxes_standing_cabinet_*), a box", 0) == 0;
+  EXPECT_TRUE(said);
+  const StandingObject& box = model->standing.at(0);
+  ASSERT_EQ(box.faces.size(), 5u);
+  const engine::CollisionWorld world = engine::CollisionWorld::fromScene(built);
+  constexpr float kRadius = 0.25f;
+  const glm::dvec3 front = box.faces[0].cornersM[0], side = box.faces[3].cornersM[0];  // on the box's near corner
+  // Towards the camera's end, 1 m before its front, walking 1.6 m along the corridor into it.
+  const glm::vec3 ahead(0.5 * (box.faces[0].cornersM[0] + box.faces[0].cornersM[1]) + glm::dvec3(0, 1.0, 1.0));
+  const glm::vec3 end = world.slideSphere(ahead, kRadius, glm::vec3(0, 0, -1.6f));
+  EXPECT_GE(end.z - front.z, kRadius - 1e-3) << "the walker passed through its front";
+  EXPECT_LT(end.z - front.z, kRadius + 0.05) << "the walker stopped short of it";
+  // From the corridor's middle, walking across it into its side.
+  const glm::vec3 across(side.x + 1.0, 1.0, 0.5 * (box.faces[3].cornersM[0].z + box.faces[3].cornersM[1].z));
+  const glm::vec3 stop = world.slideSphere(across, kRadius, glm::vec3(-1.6f, 0, 0));
+  EXPECT_GE(stop.x - side.x, kRadius - 1e-3) << "the walker passed through its side";
+  EXPECT_LT(stop.x - side.x, kRadius + 0.05);
 }
 
 TEST(StandingBoxes, TheSameOutlineFlatIsOneCutOutAsBefore) {
