@@ -352,12 +352,13 @@ Result<StandingObject> standUpBox(const Measurement& m, const std::string& who, 
   }
   if (ground.size() < 3) return makeError(who + ": too few of its pixels meet the floor to stand it up as a box");
   // The nearest ground point is the footprint's corner nearest the camera.
+  const auto percentile = [](std::vector<double> v, double q) {  // 0.5: the median
+    const auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
+    std::nth_element(v.begin(), at, v.end());
+    return *at;
+  };
   const auto nearest = std::max_element(ground.begin(), ground.end(), [](const Ground& a, const Ground& b) { return a.p.z < b.p.z; });
   const glm::dvec3 corner = nearest->p;
-  const auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
   // The camera sees the box's side facing it: the right side of a box left of the camera,
   // and it shows right of the corner in the photo (towards the vanishing point).
   const bool leftOfEye = corner.x < eye.x;
@@ -370,11 +371,6 @@ Result<StandingObject> standUpBox(const Measurement& m, const std::string& who, 
   // Where to start: the footprint the ground points give, and boxes of a few sizes from
   // the nearest corner (a ground point on the far side may be the top of the box or a
   // shadow GrabCut kept); the best after the descent is taken.
-  const auto percentile = [](std::vector<double> v, double q) {
-    const auto at = v.begin() + static_cast<std::ptrdiff_t>(std::lround(q * (v.size() - 1)));
-    std::nth_element(v.begin(), at, v.end());
-    return *at;
-  };
   const auto fromCorner = [&](double width, double depth) {
     BoxM x;
     x.z1 = corner.z, x.z0 = corner.z - depth;
@@ -385,9 +381,9 @@ Result<StandingObject> standUpBox(const Measurement& m, const std::string& who, 
   std::vector<BoxM> starts;
   {
     BoxM x;
-    x.z1 = median(frontZ);
+    x.z1 = percentile(frontZ, 0.5);
     const double farX = leftOfEye ? percentile(frontX, 0.1) : percentile(frontX, 0.9);
-    const double sideAt = sideX.size() >= 3 ? median(sideX) : corner.x;
+    const double sideAt = sideX.size() >= 3 ? percentile(sideX, 0.5) : corner.x;
     x.x0 = leftOfEye ? farX : sideAt;
     x.x1 = leftOfEye ? sideAt : farX;
     x.z0 = sideZ.size() >= 3 ? percentile(sideZ, 0.1) : x.z1 - kDefaultDepthM;
@@ -441,8 +437,6 @@ Result<StandingObject> standUpBox(const Measurement& m, const std::string& who, 
     if (score > best) best = score, b = fitted;
   }
   if (!(best > 0)) return makeError(who + ": no box on the floor covers it (is it on the floor?)");
-  const auto cover = silhouette.cover(b);
-  object.boxCoverage = cover->first, object.boxFill = cover->second;
   // How well the photo sees its depth: the far end of the side it shows moves this many
   // pixels per metre; the mask's edge is good to about kOutlinePx. A side seen so nearly
   // edge on that this gives more than half the depth found says nothing of it, and the

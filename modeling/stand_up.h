@@ -64,9 +64,6 @@ struct StandingObject {
   bool depthSeen = true;
   double distanceM = 0;     // from the photo's camera to the foot, along the floor
   int maskPixels = 0;       // photo pixels GrabCut gave the object
-  // A box: the share of the object's pixels its silhouette covers, and of its silhouette
-  // that the object covers (how well the box fits what GrabCut found).
-  double boxCoverage = 0, boxFill = 0;
 };
 
 struct StoodUp {
