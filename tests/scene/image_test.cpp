@@ -1,6 +1,7 @@
 #include "engine/scene/image.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,16 +10,22 @@ namespace pw::engine {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path tempDir() {
-  fs::path d = fs::temp_directory_path() / ("pw_image_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  fs::create_directories(d);
-  return d;
-}
+// A directory of this test process's own, removed when the test ends.
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("pw_image_test_" + std::to_string(::getpid()));
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  fs::path operator/(const char* name) const { return path / name; }
+};
 
 TEST(Image, PngRoundTripIsExact) {
   Image img = makeImage(5, 3, 0x11223344);
   img.pixel(4, 2)[0] = 200;
-  const fs::path path = tempDir() / "round.png";
+  TempDir dir;
+  const fs::path path = dir / "round.png";
   ASSERT_TRUE(saveImage(path, img).ok());
   auto back = loadImage(path);
   ASSERT_TRUE(back.ok()) << back.message();
@@ -32,8 +39,9 @@ TEST(Image, GreyImagesStayGreyInFiles) {
   grey.pixel(1, 1)[0] = grey.pixel(1, 1)[1] = grey.pixel(1, 1)[2] = 17;
   Image greyAlpha = grey;
   greyAlpha.pixel(3, 0)[3] = 40;
+  TempDir dir;
   for (const Image& image : {grey, greyAlpha}) {
-    const fs::path path = tempDir() / "grey.png";
+    const fs::path path = dir / "grey.png";
     ASSERT_TRUE(saveImage(path, image).ok());
     auto back = loadImage(path);
     ASSERT_TRUE(back.ok()) << back.message();
@@ -52,7 +60,8 @@ TEST(Image, MissingFileNamesTheFile) {
 }
 
 TEST(Image, CorruptFileIsAnErrorNotACrash) {
-  const fs::path path = tempDir() / "corrupt.png";
+  TempDir dir;
+  const fs::path path = dir / "corrupt.png";
   std::ofstream(path) << "\x89PNG\r\n\x1a\n garbage";
   auto r = loadImage(path);
   ASSERT_FALSE(r.ok());
