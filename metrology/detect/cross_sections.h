@@ -53,12 +53,18 @@ struct CrossSectionMatch {
   std::array<double, 4> sideCoverage{};  // share of each side (top, bottom, left, right) on an image edge
   double boundaryContrast = 0;           // edge share along the rays just outside minus just inside
   double score = 0;
+  // The side (0..3, as sideCoverage) taken as hidden: the section was scored on its
+  // other three (findFarWall); -1 when all four show.
+  int hiddenSide = -1;
 };
 
 // The far wall: the section with edges on all four sides where the receding
 // boundaries start (they run outwards from its corners, not inwards). A band or
 // door frame nearer the camera has edges on its sides too, but the boundaries run
-// on inside it. The error says why none was found.
+// on inside it. A section whose three best sides show clearly is scored on those
+// three, less a penalty, with its fourth side hidden (hiddenSide): a person before a
+// far corner, an open end's floor running on, a white wall under a white ceiling.
+// The error says why none was found.
 Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSectionFamily& family);
 // A far wall scored below this (down to findFarWall's least, 0.8) is found, but thinly:
 // an answer through it is a guess (the random TUNE scenes 0-299: with 1.2 as the least,

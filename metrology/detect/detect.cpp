@@ -1074,7 +1074,9 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
       // training half: a pole in a subway car, a stairway outdoors; TUNE 0-299: 4 of
       // 6 such answers wrong, the other 2 found right by the room's box fit as well).
       profileReason = "no far wall: " + thinly;
-    } else if (auto done = completeFromFarWall(search, d, farWall->corners, farWall->t); !done) {
+    } else if (auto done = completeFromFarWall(search, d, farWall->corners, farWall->t, std::nullopt,
+                                               /*allowHiddenSide=*/farWall->hiddenSide >= 0);
+               !done) {
       profileReason = done.message();
       profileFar = std::pair{farWall->corners, farWall->t};
     } else {
