@@ -210,8 +210,9 @@ double CrossSectionFamily::largestInside(cv::Size size, double marginPx) const {
 namespace {
 
 // The far-wall scan over t in [tFrom, tTo]: the best-scoring section (the middle of
-// its plateau), or nullopt when no section there has edges on all four sides.
-// `sidesSeen`: how many of the four sides must be edges (the best ones scored).
+// its plateau), or nullopt when no section there has edges on all four sides (three,
+// with `allowHidden`, one side then taken as hidden). `sidesSeen`: how many of the four
+// sides must be edges (the best ones scored).
 std::optional<CrossSectionMatch> scanFarWall(const WorkingImage& image, const CrossSectionFamily& family, double tFrom,
                                              double tTo, int sidesSeen = 4, bool allowHidden = false) {
   const double tMax = family.largestInside(image.bgr.size(), 2.0);
@@ -279,8 +280,8 @@ std::optional<CrossSectionMatch> scanFarWall(const WorkingImage& image, const Cr
   // Which section: the edges along the rays decide (with every edge counted, a textured
   // far wall's joints, which the rays cross, made the boundaries seem to run on inside
   // the true far wall and a section farther in won). Where exactly: where both agree on
-  // the section, every edge's plateau places it, as before (the project's scenes' widths
-  // moved by up to 0.3% otherwise).
+  // the section, every edge's plateau places it, as before (placed by the new score, the
+  // project's corridors' widths moved by up to 0.7%: corridor_h).
   const auto chosen = best(/*alongOnly=*/true);
   if (!chosen) return std::nullopt;
   const auto placed = best(/*alongOnly=*/false);
