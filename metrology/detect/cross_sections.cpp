@@ -256,7 +256,7 @@ std::optional<CrossSectionMatch> scanFarWall(const WorkingImage& image, const Cr
       }
       m.boundaryContrast = (outside - inside) / kBoundaryCount;
       if (allSeen) m.score = seen + m.boundaryContrast;
-      if (threeSeen) onThree[i] = (sorted[0] + sorted[1] + sorted[2]) / 3 + m.boundaryContrast - kHiddenSidePenalty;
+      if (threeSeen) onThree[i] = meanOfBest(sorted, 3) + m.boundaryContrast - kHiddenSidePenalty;
       bestOnFour = std::max(bestOnFour, m.score);
     }
     // Only where no section shows four sides clearly does one with a side hidden compete.
