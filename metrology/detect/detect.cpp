@@ -1105,8 +1105,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     auto boxDone = box ? completeFromFarWall(search, d, box->corners, glm::length(box->corners[2] - search.vpWork))
                        : Result<Candidate>(makeError(box.message()));
     if (!boxDone) {
-      doubt(fromProfile->detection, "no second fit of the room (its box fitted to all the edges) to check the far wall by: " +
-                                        boxDone.message());
+      doubt(fromProfile->detection, "the room's box fitted to all the edges, the second fit a sure answer needs, found none (" +
+                                        boxDone.message() + ")");
     } else if (const double apartPx = farWallDistancePx(fromProfile->detection, boxDone->detection); apartPx > kAgreementPx) {
       doubt(fromProfile->detection, "two fits of the room disagree on the far wall (by " +
                                         std::to_string(static_cast<int>(std::lround(apartPx))) + " px)");
