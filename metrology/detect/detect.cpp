@@ -81,9 +81,9 @@ constexpr double kFootStepWeight = 0.25;
 // on within this of one colour, or within half the board's own edge for a guess (a
 // textured wall or a lamp's gradient above a board with a strong foot), and the board's
 // band differs from it by more (grey levels, about an edge's step); a band under this
-// many working pixels is the found edge's own blur (TUNE seeds 0-299: at 2 px it moved 6 right answers off, at 3 none),
-// and a place whose band is that narrow shows none (counted as disagreeing, it kept 1
-// clean and 2 noisy TUNE feet on a board's top). The places that show a board agree
+// many working pixels is the found edge's own blur (TUNE seeds 0-299: at 2 px it moved
+// 6 right answers off, at 3 none), and a place whose band is that narrow shows none
+// (counted as disagreeing, it kept 1 clean and 2 noisy TUNE feet on a board's top). The places that show a board agree
 // within kSkirtingAgreePx (two of three agreeing took the fixed scene clutter_1's darker
 // first row of floor tiles for one; the far wall's own foot alone, where neither
 // boundary shows a board, gained 5 TUNE answers but lost 12).
@@ -670,6 +670,13 @@ std::optional<FootSearch> bestFoot(const WorkingImage& work, glm::dvec2 vp, glm:
   return best;
 }
 
+// The doubt where the angular profile's far wall and the room's box fit's lie `apartPx`
+// apart (photo pixels, worst corner).
+std::string fitsDisagree(double apartPx) {
+  return "two fits of the room disagree on the far wall (by " + std::to_string(static_cast<int>(std::lround(apartPx))) +
+         " px)";
+}
+
 // The far wall's corners P1..P4 in working pixels.
 Quad farInWorking(const CorridorDetection& d, const WorkingImage& work) {
   Quad far;
@@ -1094,28 +1101,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     }
   }
   if (fromProfile && looseVanishingPoint) doubt(fromProfile->detection, *looseVanishingPoint);
-  if (fromProfile && fromProfile->detection.confident) {
-    // Sure only where the room's box fit, a second search on all the edges rather than
-    // the angular profile, completes the same far wall within kAgreementPx (TUNE 0-599:
-    // sure answers 58 -> 41, one of the two wrong ones caught, 384; noisy 55 -> 37, all
-    // three wrong ones caught. 589, a far wall taken with its reflection, is found so by
-    // both fits).
-    auto box = fitRoomBox(work, search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
-                          segments, frame->labels);
-    auto boxDone = box ? completeFromFarWall(search, d, box->corners, glm::length(box->corners[2] - search.vpWork))
-                       : Result<Candidate>(makeError(box.message()));
-    if (!boxDone) {
-      doubt(fromProfile->detection, "the room's box fitted to all the edges, the second fit a sure answer needs, found none (" +
-                                        boxDone.message() + ")");
-    } else if (const double apartPx = farWallDistancePx(fromProfile->detection, boxDone->detection); apartPx > kAgreementPx) {
-      doubt(fromProfile->detection, "two fits of the room disagree on the far wall (by " +
-                                        std::to_string(static_cast<int>(std::lround(apartPx))) + " px)");
-    }
-    if (auto mirrored = unreflected(*fromProfile)) return mirrored->detection;
-    belowSkirting(fromProfile->detection, work, search.vpWork, photo.size());
-    return fromProfile->detection;
-  }
-
+  // The room's box fitted to all the edges: the second search (clutter hides the
+  // boundaries), and the check a sure answer from the profile must pass.
   std::string boxReason;
   std::optional<Candidate> fromBox;
   auto box = fitRoomBox(work, search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
@@ -1128,6 +1115,21 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     boxFar = std::pair{box->corners, glm::length(box->corners[2] - search.vpWork)};
   } else {
     fromBox = std::move(*done);
+  }
+  if (fromProfile && fromProfile->detection.confident) {
+    // Sure only where the box fit completes the same far wall within kAgreementPx (TUNE
+    // 0-599: sure answers 58 -> 41, one of the two wrong ones caught, 384; noisy 55 -> 37,
+    // all three wrong ones caught. 589, a far wall taken with its reflection, is found so
+    // by both fits).
+    if (!fromBox) {
+      doubt(fromProfile->detection,
+            "the room's box fitted to all the edges, the second fit a sure answer needs, found none (" + boxReason + ")");
+    } else if (const double apartPx = farWallDistancePx(fromProfile->detection, fromBox->detection); apartPx > kAgreementPx) {
+      doubt(fromProfile->detection, fitsDisagree(apartPx));
+    }
+    if (auto mirrored = unreflected(*fromProfile)) return mirrored->detection;
+    belowSkirting(fromProfile->detection, work, search.vpWork, photo.size());
+    return fromProfile->detection;
   }
   if (fromBox && looseVanishingPoint) doubt(fromBox->detection, *looseVanishingPoint);
   // The room's box fitted to the edges stands where the boundaries are partly hidden,
@@ -1190,8 +1192,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   const double apartPx = farWallDistancePx(fromProfile->detection, fromBox->detection);
   if (apartPx <= kAgreementPx) return finish(*fromProfile);
   Candidate& better = fromBox->support >= fromProfile->support ? *fromBox : *fromProfile;
-  doubt(better.detection, "two fits of the room disagree on the far wall (by " +
-                              std::to_string(static_cast<int>(std::lround(apartPx))) + " px)");
+  doubt(better.detection, fitsDisagree(apartPx));
   return finish(better);
 }
 
