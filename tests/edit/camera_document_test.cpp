@@ -19,8 +19,10 @@ namespace {
 namespace fs = std::filesystem;
 using metrology::Shot;
 
+// Its own folder: edit.Camera (camera_window_test.cpp) empties "edit_camera" as it starts,
+// and ctest runs the two at once.
 fs::path outputDir() {
-  const fs::path dir = fs::path(PW_BINARY_DIR) / "test-output" / "edit_camera";
+  const fs::path dir = fs::path(PW_BINARY_DIR) / "test-output" / "edit_camera_document";
   fs::create_directories(dir);
   return dir;
 }
