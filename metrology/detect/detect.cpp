@@ -702,10 +702,15 @@ std::optional<Quad> nearestSectionInside(const CorridorDetection& d, const Quad&
 // board 6-15 cm high on a wall 2.2-6 m high: 1-7%). Looked at in three places, each a
 // colour profile across the foot (along the foot itself, and along each floor boundary
 // beyond its corner); returns, for each place that shows a board, how far down (working
-// pixels, along the far wall's sides) its foot lies. The wall above is plain where it
-// varies by at most kSkirtingUniformGrey, or `plainOfStep` times the board's own edge.
-std::vector<double> skirtingBelow(const WorkingImage& work, glm::dvec2 vp, glm::dvec3 horizontal, glm::dvec3 vertical,
-                                  const Quad& far, double plainOfStep) {
+// pixels, along the far wall's sides) its foot lies, and whether the wall above it is
+// plain by the strict test (within kSkirtingUniformGrey; a place counts where it is
+// within kSkirtingPlainOfStep times the board's own edge).
+struct SkirtingPlace {
+  double move = 0;
+  bool wallPlain = false;
+};
+std::vector<SkirtingPlace> skirtingBelow(const WorkingImage& work, glm::dvec2 vp, glm::dvec3 horizontal,
+                                         glm::dvec3 vertical, const Quad& far) {
   const glm::dvec3 rightSide = lineThrough(homogeneous(far[1]), vertical);
   const glm::dvec2 down = directionTowards(vertical, far[0], {0, 1});
   const double height = glm::dot(far[2] - far[0], down);
@@ -744,7 +749,7 @@ std::vector<double> skirtingBelow(const WorkingImage& work, glm::dvec2 vp, glm::
     if (count < 8) return std::nullopt;
     return sum / static_cast<double>(count);
   };
-  std::vector<double> moves;
+  std::vector<SkirtingPlace> places;
   for (int piece = 0; piece < 3; ++piece) {
     std::vector<glm::dvec3> c;
     bool ok = true;
@@ -765,7 +770,7 @@ std::vector<double> skirtingBelow(const WorkingImage& work, glm::dvec2 vp, glm::
       const double step = glm::length(at(h + 1) - at(h - 1));
       if (step > bestStep) bestStep = step, edge = h;
     }
-    if (above > std::max(kSkirtingUniformGrey, plainOfStep * bestStep)) continue;
+    if (above > std::max(kSkirtingUniformGrey, kSkirtingPlainOfStep * bestStep)) continue;
     if (bestStep < kSkirtingUniformGrey) continue;
     glm::dvec3 band(0);
     int n = 0;
@@ -781,9 +786,9 @@ std::vector<double> skirtingBelow(const WorkingImage& work, glm::dvec2 vp, glm::
     // A band narrower than the least is the found edge's own blur here: this place
     // shows no board (so it does not vote against the others).
     if (edge - h0 < kMinSkirtingPx) continue;
-    moves.push_back(edge - h0);
+    places.push_back({edge - h0, above <= kSkirtingUniformGrey});
   }
-  return moves;
+  return places;
 }
 
 // How far a guess's foot moves onto a skirting board's foot: where two or three places
@@ -804,7 +809,7 @@ std::optional<double> skirtingShift(const std::vector<double>& moves) {
 // agree (skirtingShift), and P5..P8 along the boundaries through them at the nearest
 // depth inside the photo, as before. A sure answer moves, and stays sure, only where all
 // three places show the board and agree, and is otherwise a guess where any place shows
-// one with the wall above it plain (the stricter test, plainOfStep 0): the project's
+// one with the wall above it plain (the strict test, SkirtingPlace::wallPlain): the project's
 // clutter_4 has a sure right foot above a band of shadow on the floor that two places
 // agree on. TUNE 0-599, against moving a sure answer where two agree: the same right
 // answers, 58 sure (56 right) against 61 (59) clean, 55 (52) against 55 (52) noisy.
@@ -813,10 +818,13 @@ std::optional<double> skirtingShift(const std::vector<double>& moves) {
 void belowSkirting(CorridorDetection& d, const WorkingImage& work, glm::dvec2 vpWork, cv::Size size) {
   const Quad farWork = farInWorking(d, work);
   const glm::dvec3 horizontal = work.toWorking(d.horizontal.point), vertical = work.toWorking(d.vertical.point);
-  const std::vector<double> moves = skirtingBelow(work, vpWork, horizontal, vertical, farWork, kSkirtingPlainOfStep);
+  std::vector<double> moves, plain;  // every place that shows a board; those with the wall above plain
+  for (const SkirtingPlace& place : skirtingBelow(work, vpWork, horizontal, vertical, farWork)) {
+    moves.push_back(place.move);
+    if (place.wallPlain) plain.push_back(place.move);
+  }
   const std::optional<double> shift = skirtingShift(moves);
   if (d.confident && !(shift && moves.size() == 3)) {
-    const std::vector<double> plain = skirtingBelow(work, vpWork, horizontal, vertical, farWork, 0.0);
     if (!plain.empty()) {
       const int px = static_cast<int>(std::lround(*std::max_element(plain.begin(), plain.end()) / work.scale));
       doubt(d, "a band like a skirting board's ends " + std::to_string(px) +
