@@ -206,6 +206,7 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
   // coarse step, the strongest first).
   constexpr std::array<int, kBoundaryCount> kQuadrantOf = {1, 0, 2, 3};
   std::array<std::vector<std::pair<double, int>>, kBoundaryCount> peaks;  // strength, bin
+  int missing = -1;
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
     const double q0 = horizonAngle + kQuadrantOf[boundary] * kPi / 2;
     const double margin = kQuadrantMarginDeg * kPi / 180;
@@ -219,7 +220,14 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
       if (step[i] > strongest) strongest = step[i], strongestBin = (first + i) % kBins;
     }
     if (strongest < kMinContrast) {
-      return makeError(std::string("no ") + boundaryName(boundary) + " boundary (floor, walls and ceiling look alike)");
+      // One quadrant without a step (a floor the walls' colour) is where the other three
+      // put it; two are not found.
+      if (missing >= 0 || !sectionPoints) {
+        return makeError(std::string("no ") + boundaryName(missing >= 0 ? missing : boundary) +
+                         " boundary (floor, walls and ceiling look alike)");
+      }
+      missing = boundary;
+      continue;
     }
     peaks[boundary].push_back({strongest, strongestBin});
     for (int i = 0; i <= span; ++i) {
@@ -251,7 +259,7 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
       return worst;
     };
     const double agree = kBoxAgreementDeg * kPi / 180;
-    if (agreement(pick) > agree) {
+    if (missing < 0 && agreement(pick) > agree) {
       double bestStrength = -1;
       std::array<int, kBoundaryCount> counts{};
       for (int b = 0; b < kBoundaryCount; ++b) counts[b] = static_cast<int>(peaks[b].size());
@@ -264,6 +272,7 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
   }
   RecedingBoundaries out;
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
+    if (boundary == missing) continue;
     const auto [strength, coarseBin] = peaks[boundary][pick[boundary]];
     // Place it: the sharpest step near the coarse one. Narrow windows are not
     // misled by a texture line beside the boundary (a mortar joint one brick
@@ -271,6 +280,13 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     out.angle[boundary] = sharpestStepAngle(profile, coarseBin, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
     out.contrast[boundary] = strength;
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
+  }
+  if (missing >= 0) {
+    const auto implied = impliedBoundaryAngle(out, missing, vp, sectionPoints->first, sectionPoints->second);
+    if (!implied) return makeError(std::string("no ") + boundaryName(missing) + " boundary (floor, walls and ceiling look alike)");
+    out.angle[missing] = *implied;
+    out.edgeCoverage[missing] = rayEdgeCoverage(image, vp, *implied);
+    out.implied = missing;
   }
   return out;
 }

@@ -1078,8 +1078,24 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   auto boundaries = findRecedingBoundaries(work, search.vpWork, std::atan2(horizon.y, horizon.x),
                                            std::pair{work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point)});
   if (!boundaries) profileReason = boundaries.message();
+  if (boundaries && boundaries->implied < 0) {
+    // One boundary with no edge along it (a floor's skirting hidden by benches, white on
+    // white) is where the other three put it.
+    int edgeless = -1, count = 0;
+    for (int b = 0; b < kBoundaryCount; ++b) {
+      if (boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) edgeless = b, ++count;
+    }
+    if (count == 1) {
+      if (const auto implied = impliedBoundaryAngle(*boundaries, edgeless, search.vpWork, work.toWorking(d.horizontal.point),
+                                                    work.toWorking(d.vertical.point))) {
+        boundaries->angle[edgeless] = *implied;
+        boundaries->edgeCoverage[edgeless] = rayEdgeCoverage(work, search.vpWork, *implied);
+        boundaries->implied = edgeless;
+      }
+    }
+  }
   for (int b = 0; boundaries && b < kBoundaryCount && profileReason.empty(); ++b) {
-    if (boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) {
+    if (b != boundaries->implied && boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) {
       profileReason = std::string("no edge along the ") + boundaryName(b) + " boundary";
     }
   }
@@ -1106,6 +1122,10 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     } else {
       fromProfile = std::move(*done);
       if (thin) doubt(fromProfile->detection, thinly);
+      if (boundaries->implied >= 0) {
+        doubt(fromProfile->detection, std::string("the ") + boundaryName(boundaries->implied) +
+                                          " boundary does not show: it was taken where the other three put it");
+      }
     }
   }
   if (fromProfile && looseVanishingPoint) doubt(fromProfile->detection, *looseVanishingPoint);
@@ -1196,8 +1216,11 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   };
   if (!fromProfile) return finish(*fromBox);
   if (!fromBox) return finish(*fromProfile);
-  // Both found and agreeing: the profile's answer, with its own doubts.
+  // A profile with a boundary taken where the other three put it does not gainsay a sure
+  // box fit, nor stand for it where the two agree.
   const double apartPx = farWallDistancePx(fromProfile->detection, fromBox->detection);
+  if (boundaries->implied >= 0 && (fromBox->detection.confident || apartPx <= kAgreementPx)) return finish(*fromBox);
+  // Both found and agreeing: the profile's answer, with its own doubts.
   if (apartPx <= kAgreementPx) return finish(*fromProfile);
   // Where they disagree, a fit whose boundaries, or whose far wall's top or foot, divide
   // surfaces alike (assess) has not found a room's box: the other is taken; else the one
