@@ -1187,7 +1187,11 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // a room's box around it. That its boundaries run on from its corners is not asked:
   // the clutter that scatters the lines hides them (TUNE 0-299: 14 of the 43 clean
   // scenes with "no corridor" and the box in view stopped there; asked no more, 7 right
-  // answers, 4 near misses and 7 wrong guesses, clean and noisy).
+  // answers, 4 near misses and 7 wrong guesses, clean and noisy). The angular profile's
+  // answer is not asked either: its boundaries are where the profile's colour steps
+  // are, and the test along them, a second look, refused right answers (TUNE 0-599: of
+  // its 15 answers so refused, clean and noisy, 8 right and 7 off by 4.8-12.7 px but one;
+  // the box fit's, 2 right of 54).
   // A guess's foot searched afresh (bestFoot), taken where it scores clearly better;
   // the answer stays a guess.
   const auto refooted = [&](const Candidate& c) -> std::optional<Candidate> {
@@ -1205,7 +1209,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     return std::move(*done);
   };
   const auto finish = [&](const Candidate& found) {
-    if (scatteredLines && found.surfacesAlike) return notFound(d, *scatteredLines + "; " + *found.surfacesAlike);
+    const bool profiled = fromProfile && &found == &*fromProfile;
+    if (scatteredLines && found.surfacesAlike && !profiled) return notFound(d, *scatteredLines + "; " + *found.surfacesAlike);
     std::optional<Candidate> better = unreflected(found);
     if (!better) better = refooted(found);
     // (A foot that shows no room where the one found did is not taken.)
