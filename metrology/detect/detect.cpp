@@ -320,6 +320,11 @@ constexpr double kSureFarSideOfShortSide = 0.05;
 constexpr double kSureBoundaryStretchOfShortSide = 0.15;
 constexpr int kSureLongBoundaries = 2;
 
+// The doubt where `runOn` boundaries run on inside the far wall's corners (assess).
+std::string runsOnInside(int runOn) {
+  return std::to_string(runOn) + (runOn == 1 ? " boundary runs" : " boundaries run") + " on inside the far wall's corners";
+}
+
 // The doubts a found corridor leaves: where the box's evidence is thin. A wrong far
 // wall (a cabinet's front, a doorway nearer the camera) has the sides of a rectangle,
 // but the boundaries do not run on from its corners across the walls. Returns the
@@ -331,10 +336,7 @@ std::optional<std::string> assess(CorridorDetection& d, const FarWallSearch& s, 
   // rectangle is a section nearer the camera (a band, a doorway, a lamp's light).
   int runOn = 0;
   for (int k = 0; k < 4; ++k) runOn += edgeBeforeCorner(s.work, s.vpWork, s.work.toWorking(far.corners[k])) >= kRunOnCoverage;
-  if (runOn >= 1) {
-    d.doubts.push_back(std::to_string(runOn) + (runOn == 1 ? " boundary runs" : " boundaries run") +
-                       " on inside the far wall's corners");
-  }
+  if (runOn >= 1) d.doubts.push_back(runsOnInside(runOn));
   static const char* const kSideNames[4] = {"top", "bottom", "left", "right"};
   for (int side = 0; side < 4; ++side) {
     const double need = side == kBottomSide ? kSureBottomSideCoverage : kSureFarSideCoverage;
@@ -1225,8 +1227,18 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // box fit, nor stand for it where the two agree.
   const double apartPx = farWallDistancePx(fromProfile->detection, fromBox->detection);
   if (boundaries->implied >= 0 && (fromBox->detection.confident || apartPx <= kAgreementPx)) return finish(*fromBox);
-  // Both found and agreeing: the profile's answer, with its own doubts.
-  if (apartPx <= kAgreementPx) return finish(*fromProfile);
+  // Both found and agreeing: the profile's answer, with its own doubts. Where its one
+  // doubt is a single boundary running on inside the far wall's corners (a doorway's or
+  // a band's line reaching the far wall), and finishing it added none, the two fits
+  // agreeing make it sure (TUNE 0-599: 18 of 18 such answers right clean, 14 of 14 noisy).
+  if (apartPx <= kAgreementPx) {
+    CorridorDetection out = finish(*fromProfile);
+    if (out.found && out.doubts == std::vector<std::string>{runsOnInside(1)}) {
+      out.doubts.clear();
+      out.confident = true;
+    }
+    return out;
+  }
   // Where they disagree, a fit whose boundaries, or whose far wall's top or foot, divide
   // surfaces alike (assess) has not found a room's box: the other is taken; else the one
   // with the better support. (TUNE 0-599, the answers where the two disagree: by support
