@@ -1236,6 +1236,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     if (out.found && out.doubts == std::vector<std::string>{runsOnInside(1)}) {
       out.doubts.clear();
       out.confident = true;
+      belowSkirting(out, work, search.vpWork, photo.size());  // as for a sure answer: a board below its foot doubts it
     }
     return out;
   }
