@@ -26,8 +26,9 @@ struct RecedingBoundaries {
   std::array<double, kBoundaryCount> contrast{};
   // Share of the ray's outer half where an edge runs along it.
   std::array<double, kBoundaryCount> edgeCoverage{};
-  // The boundary whose quadrant shows no step, taken where the other three put it
-  // (impliedBoundaryAngle); -1 where all four were found.
+  // The boundary taken where the other three put it (impliedBoundaryAngle): its quadrant
+  // shows no step (findRecedingBoundaries), or no edge runs along it (detect); -1 where
+  // all four were found.
   int implied = -1;
 
   glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }

@@ -269,6 +269,54 @@ TEST(DetectParts, ThreeBoundariesImplyTheFourth) {
   }
 }
 
+// A corridor whose floor and left wall are one colour up to the far wall (no step between
+// them in the angular profile): the floor-left boundary is taken where the other three
+// put it, within half a degree; detect finds the far wall within a pixel, never sure.
+TEST(DetectParts, ABoundaryThatDoesNotShowIsWhereTheOtherThreePutIt) {
+  testing::CorridorSpec spec;
+  spec.yawDeg = 4;
+  spec.pitchDeg = -3;
+  spec.noiseSigma = 0;
+  testing::SyntheticCorridor c = testing::renderCorridor(spec);
+  const cv::Mat original = c.image.clone();
+  const glm::dvec2 vp = c.vanishingPoint;
+  const glm::dvec2 wallPoint = c.farWall[2] + glm::dvec2(-0.6 * (c.farWall[3].x - c.farWall[2].x), -10);
+  const cv::Vec3b wall = original.at<cv::Vec3b>(static_cast<int>(wallPoint.y), static_cast<int>(wallPoint.x));
+  // The lower-left quadrant about the vanishing point painted the left wall's colour...
+  const std::vector<cv::Point> wedge = {cv::Point(vp.x, vp.y), cv::Point(0, vp.y), cv::Point(0, c.image.rows),
+                                        cv::Point(vp.x, c.image.rows)};
+  cv::fillConvexPoly(c.image, wedge, cv::Scalar(wall[0], wall[1], wall[2]));
+  // ...but for the far wall, as it was.
+  cv::Mat inside(c.image.size(), CV_8U, cv::Scalar(0));
+  std::vector<cv::Point> far;
+  for (int k : {0, 1, 3, 2}) far.emplace_back(std::lround(c.farWall[k].x), std::lround(c.farWall[k].y));
+  cv::fillConvexPoly(inside, far, cv::Scalar(255));
+  original.copyTo(c.image, inside);
+
+  const WorkingImage work = makeWorkingImage(c.image, 1280);
+  const std::vector<LineSegment> segments = detectLineSegments(work.gray, work.scale, 0.02 * std::hypot(800, 600));
+  auto frame = estimateManhattanFrame(segments, PinholeCamera{spec.focalPx, c.principalPoint}, c.image.size());
+  ASSERT_TRUE(frame.ok()) << frame.message();
+  const glm::dvec2 vpWork = work.toWorking(frame->corridor.pixel());
+  const glm::dvec2 horizon = directionTowards(frame->horizontal.point, frame->corridor.pixel());
+  const double horizonAngle = std::atan2(horizon.y, horizon.x);
+  // Alone, the profile finds no floor-left boundary (as before three fixed the fourth)...
+  EXPECT_FALSE(findRecedingBoundaries(work, vpWork, horizonAngle).ok());
+  // ...and with the box's section points, takes it where the other three put it.
+  auto rays = findRecedingBoundaries(work, vpWork, horizonAngle,
+                                     std::pair{work.toWorking(frame->horizontal.point), work.toWorking(frame->vertical.point)});
+  ASSERT_TRUE(rays.ok()) << rays.message();
+  EXPECT_EQ(rays->implied, kFloorLeft);
+  const glm::dvec2 truth = work.toWorking(c.farWall[2]) - vpWork;
+  EXPECT_LT(std::abs(std::remainder(rays->angle[kFloorLeft] - std::atan2(truth.y, truth.x), 2 * kPi)), 0.5 * kPi / 180);
+
+  auto d = detectCorridor(c.image, DetectOptions{.focalPx = spec.focalPx, .principalPointPx = c.principalPoint});
+  ASSERT_TRUE(d.ok()) << d.message();
+  ASSERT_TRUE(d->found) << d->notFoundReason;
+  for (int k = 0; k < 4; ++k) EXPECT_LT(glm::length(d->corners[k].px - c.farWall[k]), 1.0) << "P" << k + 1;
+  EXPECT_FALSE(d->confident);
+}
+
 TEST(DetectParts, DetectRejectsInputThatMakesNoSense) {
   const cv::Mat photo(480, 640, CV_8UC3, cv::Scalar(100, 100, 100));
   EXPECT_FALSE(detectCorridor(cv::Mat(), {}).ok());
