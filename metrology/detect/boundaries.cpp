@@ -281,12 +281,25 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     out.contrast[boundary] = strength;
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
   }
+  // The one boundary that does not show, where the other three put it: its quadrant has
+  // no step, or it is the only one with no edge along it (a floor's skirting hidden by
+  // benches, white on white).
+  const auto imply = [&](int b) {
+    const auto implied = impliedBoundaryAngle(out, b, vp, sectionPoints->first, sectionPoints->second);
+    if (!implied) return false;
+    out.angle[b] = *implied;
+    out.edgeCoverage[b] = rayEdgeCoverage(image, vp, *implied);
+    out.implied = b;
+    return true;
+  };
   if (missing >= 0) {
-    const auto implied = impliedBoundaryAngle(out, missing, vp, sectionPoints->first, sectionPoints->second);
-    if (!implied) return makeError(std::string("no ") + boundaryName(missing) + " boundary (floor, walls and ceiling look alike)");
-    out.angle[missing] = *implied;
-    out.edgeCoverage[missing] = rayEdgeCoverage(image, vp, *implied);
-    out.implied = missing;
+    if (!imply(missing)) return makeError(std::string("no ") + boundaryName(missing) + " boundary (floor, walls and ceiling look alike)");
+  } else if (sectionPoints) {
+    int edgeless = -1, count = 0;
+    for (int b = 0; b < kBoundaryCount; ++b) {
+      if (out.edgeCoverage[b] < kMinBoundaryEdgeCoverage) edgeless = b, ++count;
+    }
+    if (count == 1) imply(edgeless);
   }
   return out;
 }

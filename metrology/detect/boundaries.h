@@ -17,6 +17,10 @@ enum Boundary : int { kFloorLeft = 0, kFloorRight, kCeilingLeft, kCeilingRight }
 inline constexpr int kBoundaryCount = 4;
 const char* boundaryName(int boundary);
 
+// A boundary must follow an edge over a quarter of its outer half at least (people or
+// furniture may hide the rest; RecedingBoundaries::edgeCoverage).
+inline constexpr double kMinBoundaryEdgeCoverage = 0.25;
+
 struct RecedingBoundaries {
   // Angle of each ray from the vanishing point, radians, in the image frame (0 along
   // +u, pi/2 along +v, i.e. downwards), at working resolution.
@@ -27,8 +31,8 @@ struct RecedingBoundaries {
   // Share of the ray's outer half where an edge runs along it.
   std::array<double, kBoundaryCount> edgeCoverage{};
   // The boundary taken where the other three put it (impliedBoundaryAngle): its quadrant
-  // shows no step (findRecedingBoundaries), or no edge runs along it (detect); -1 where
-  // all four were found.
+  // shows no step, or no edge runs along it (the only one under kMinBoundaryEdgeCoverage);
+  // -1 where all four were found.
   int implied = -1;
 
   glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }
@@ -47,7 +51,8 @@ struct RecedingBoundaries {
 // point at the one and sides at the other, so any three boundaries fix the fourth, and
 // where the strongest steps disagree with that (a lamp row along the ceiling passing for
 // its edge with a wall), the strongest set among each quadrant's few strongest steps
-// that agrees is taken.
+// that agrees is taken; and one boundary that does not show (no step in its quadrant,
+// or the only one with no edge along it) is where the other three put it (`implied`).
 Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vanishingPoint,
                                                   double horizonAngle,
                                                   std::optional<std::pair<glm::dvec3, glm::dvec3>> sectionPoints = {});

@@ -32,9 +32,6 @@ constexpr int kMinPhotoSidePx = 32;
 // Up to the loose limit (noise and JPEG blocks bend short segments) it is a doubt.
 constexpr double kMaxCorridorRmsAngleDeg = 2.0;
 constexpr double kMaxLooseCorridorRmsAngleDeg = 3.0;
-// A boundary must follow an edge over a quarter of its outer half at least (people
-// or furniture may hide the rest).
-constexpr double kMinBoundaryEdgeCoverage = 0.25;
 // Each far-wall side must be an edge over this share of its middle stretch.
 constexpr double kMinFarSideCoverage = 0.3;
 // A sure answer: the far wall's top and sides seen along most of their length, its
@@ -1080,22 +1077,6 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   auto boundaries = findRecedingBoundaries(work, search.vpWork, std::atan2(horizon.y, horizon.x),
                                            std::pair{work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point)});
   if (!boundaries) profileReason = boundaries.message();
-  if (boundaries && boundaries->implied < 0) {
-    // One boundary with no edge along it (a floor's skirting hidden by benches, white on
-    // white) is where the other three put it.
-    int edgeless = -1, count = 0;
-    for (int b = 0; b < kBoundaryCount; ++b) {
-      if (boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) edgeless = b, ++count;
-    }
-    if (count == 1) {
-      if (const auto implied = impliedBoundaryAngle(*boundaries, edgeless, search.vpWork, work.toWorking(d.horizontal.point),
-                                                    work.toWorking(d.vertical.point))) {
-        boundaries->angle[edgeless] = *implied;
-        boundaries->edgeCoverage[edgeless] = rayEdgeCoverage(work, search.vpWork, *implied);
-        boundaries->implied = edgeless;
-      }
-    }
-  }
   for (int b = 0; boundaries && b < kBoundaryCount && profileReason.empty(); ++b) {
     if (b != boundaries->implied && boundaries->edgeCoverage[b] < kMinBoundaryEdgeCoverage) {
       profileReason = std::string("no edge along the ") + boundaryName(b) + " boundary";
