@@ -41,6 +41,11 @@ constexpr double kSureFarSideCoverage = 0.6;
 constexpr double kSureBottomSideCoverage = 0.5;
 constexpr double kSureBoundaryCoverage = 0.5;
 constexpr int kSureBoundaries = 3;
+// A room's box divides surfaces along two of its four boundaries at least: an answer
+// along fewer is a rectangle among other edges (tests/data/detect/camera.png: a lawn
+// behind a tripod). TUNE 0-599: none of the 18 clean and 17 noisy answers with 0 or 1
+// was right (with 2, 6 of 40 and 4 of 38).
+constexpr int kMinDividingBoundaries = 2;
 constexpr double kRunOnCoverage = 0.5;  // of the stretch just inside a far corner
 // A focal length from a second vanishing point: the corridor's point at least this
 // share of the long side from the principal point along the second one's direction,
@@ -211,6 +216,7 @@ struct Candidate {
   // Why the box's surfaces do not show a room (assess): its boundaries, or its far
   // wall's top or foot, divide surfaces alike; nullopt when they do.
   std::optional<std::string> surfacesAlike;
+  int dividingBoundaries = 0;  // of the four, those that divide two surfaces (assess)
 };
 
 void doubt(CorridorDetection& d, const std::string& why) {
@@ -317,6 +323,12 @@ constexpr double kSureFarSideOfShortSide = 0.05;
 constexpr double kSureBoundaryStretchOfShortSide = 0.15;
 constexpr int kSureLongBoundaries = 2;
 
+// Why an answer whose boundaries divide surfaces in fewer than kMinDividingBoundaries
+// places is no corridor.
+std::string noRoomBox(int dividing) {
+  return "only " + std::to_string(dividing) + " of the four boundaries of the box found divide two surfaces: no room's box";
+}
+
 // The doubt where `runOn` boundaries run on inside the far wall's corners (assess).
 std::string runsOnInside(int runOn) {
   return std::to_string(runOn) + (runOn == 1 ? " boundary runs" : " boundaries run") + " on inside the far wall's corners";
@@ -327,7 +339,7 @@ std::string runsOnInside(int runOn) {
 // but the boundaries do not run on from its corners across the walls. Returns the
 // first doubt about its surfaces (Candidate::surfacesAlike).
 std::optional<std::string> assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& far,
-                                  const std::array<RefinedBoundary, kBoundaryCount>& rays) {
+                                  const std::array<RefinedBoundary, kBoundaryCount>& rays, int& dividing) {
   std::optional<std::string> surfacesAlike;
   // The boundaries start at the far wall's corners; where they run on inside it the
   // rectangle is a section nearer the camera (a band, a doorway, a lamp's light).
@@ -352,7 +364,7 @@ std::optional<std::string> assess(CorridorDetection& d, const FarWallSearch& s, 
   const auto w = [&](int k) { return s.work.toWorking(d.corners[k].px); };
   constexpr std::array<std::array<int, 2>, kBoundaryCount> kBoundaryEnds{{{P3, P5}, {P4, P6}, {P1, P7}, {P2, P8}}};
   const double shortSide = std::min(s.photo.size().width, s.photo.size().height);
-  int dividing = 0;
+  dividing = 0;
   for (const auto& [farCorner, nearCorner] : kBoundaryEnds) {
     dividing += glm::length(d.corners[farCorner].px - d.corners[nearCorner].px) >= kMinJudgedBoundaryOfShortSide * shortSide &&
                 surfaceStep(s.work, w(farCorner), w(nearCorner)).share >= kSureBoundaryStepShare;
@@ -596,8 +608,9 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   }
   if (!allFinite(d.corners)) return makeError("the fitted corners are degenerate");
   d.found = true;
-  std::optional<std::string> surfacesAlike = assess(d, s, far, rays);
-  Candidate c{std::move(d), 0.0, std::move(surfacesAlike)};
+  int dividing = 0;
+  std::optional<std::string> surfacesAlike = assess(d, s, far, rays, dividing);
+  Candidate c{std::move(d), 0.0, std::move(surfacesAlike), dividing};
   for (int k = 0; k < 4; ++k) c.support += far.sides[k].coverage / 8 + (rays[k].fit ? rays[k].fit->coverage : 0.0) / 8;
   return c;
 }
@@ -1198,7 +1211,9 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     if (!better) better = refooted(found);
     // (A foot that shows no room where the one found did is not taken.)
     if (better && scatteredLines && better->surfacesAlike) better.reset();
-    CorridorDetection out = (better ? *better : found).detection;
+    const Candidate& chosen = better ? *better : found;
+    if (chosen.dividingBoundaries < kMinDividingBoundaries) return notFound(d, noRoomBox(chosen.dividingBoundaries));
+    CorridorDetection out = chosen.detection;
     belowSkirting(out, work, search.vpWork, photo.size());
     return out;
   };

@@ -26,6 +26,9 @@ constexpr int kFirstDirectionDraws = 250;   // pairs of segments giving the firs
 constexpr size_t kDrawPoolSize = 400;       // the longest segments give and score the hypotheses
 constexpr int kRefinementRounds = 3;
 constexpr size_t kMinSegments = 8;
+// A vanishing point's spread (VanishingPoint::rmsAngleDeg) is measured over the inliers
+// this share of the image diagonal or more away from it.
+constexpr double kSpreadAwayOfDiagonal = 0.05;
 
 struct SphereSegment {
   glm::dvec3 normal;  // unit normal of the interpretation plane through the camera centre
@@ -196,11 +199,23 @@ glm::dvec2 refineFinitePoint(glm::dvec2 v, const std::vector<LineSegment>& segme
 namespace {
 
 // RMS angle (degrees) between inlier segments and the lines from their midpoints
-// to the vanishing point.
-double rmsAngleDeg(glm::dvec3 point, const std::vector<LineSegment>& segments, const std::vector<int>& members) {
+// to the vanishing point, length-weighted, over the inliers whose midpoints lie
+// kSpreadAwayOfDiagonal of the image diagonal or more from a finite point (all of them
+// where none does). Near the point a segment's line to it is ill-defined: a short edge
+// a few dozen pixels from it, on the sphere within kInlierAngleDeg, is 10-40 degrees
+// off in the image. Measured over every inlier, the random TUNE scenes 0-599 had 103 of
+// 600 corridor points "scattered" (over 3 degrees) while every one of them lay within
+// a degree of the truth (median 0.09); away from the point, 9.
+double rmsAngleDeg(glm::dvec3 point, const std::vector<LineSegment>& segments, const std::vector<int>& members,
+                   double awayPx) {
+  const bool finite = std::abs(point.z) > 1e-9;
+  const glm::dvec2 at = finite ? glm::dvec2(point) / point.z : glm::dvec2(0);
+  const auto away = [&](const LineSegment& s) { return !finite || glm::length(0.5 * (s.a + s.b) - at) >= awayPx; };
+  const bool anyAway = std::any_of(members.begin(), members.end(), [&](int i) { return away(segments[i]); });
   double sum = 0, weight = 0;
   for (int i : members) {
     const LineSegment& s = segments[i];
+    if (anyAway && !away(s)) continue;
     const glm::dvec2 m = 0.5 * (s.a + s.b);
     const glm::dvec2 toPoint = directionTowards(point, m);
     const glm::dvec2 along = (s.b - s.a) / s.lengthPx;
@@ -352,7 +367,7 @@ Result<ManhattanFrame> estimateManhattanFrame(const std::vector<LineSegment>& se
     vp.point = glm::normalize(p);
     vp.inlierCount = static_cast<int>(members.size());
     for (int i : members) vp.inlierLengthPx += segments[i].lengthPx;
-    vp.rmsAngleDeg = rmsAngleDeg(vp.point, segments, members);
+    vp.rmsAngleDeg = rmsAngleDeg(vp.point, segments, members, kSpreadAwayOfDiagonal * diagonal);
     const double support = 1.0 - std::exp(-vp.inlierLengthPx / diagonal);
     if (role == 0) {
       vp.confidence = vp.isFinite() ? sectorCoverage(vp.pixel(), segments, members, diagonal) * support : 0.0;
