@@ -243,11 +243,18 @@ TEST(Autosave, APhotoNeverSavedHasUnsavedEditsOnlyOnceEdited) {
 TEST(Autosave, ASideFileThatCannotBeReadIsAnErrorAndStays) {
   const fs::path dir = freshDir("autosave_bad");
   const fs::path shotPath = corridorIn(dir);
-  std::ofstream(autosavePath(shotPath)) << "{ not json";
+  {
+    std::ofstream side(autosavePath(shotPath));
+    side << "{ not json";
+    ASSERT_TRUE(side.flush()) << "could not write " << autosavePath(shotPath);
+  }
+  // (This test failed once in a loaded CI run, cause not found: each step says what it saw.)
+  ASSERT_EQ(bytesOf(autosavePath(shotPath)), "{ not json");
   auto doc = Document::open(shotPath);
-  ASSERT_TRUE(doc.ok());
+  ASSERT_TRUE(doc.ok()) << doc.message();
   auto recovered = recoverableShot(*doc);
-  ASSERT_FALSE(recovered.ok());
+  ASSERT_FALSE(recovered.ok()) << "recovered " << (recovered.ok() && recovered->has_value() ? "a shot" : "nothing")
+                               << " from " << autosavePath(shotPath) << ", which holds: " << bytesOf(autosavePath(shotPath));
   EXPECT_NE(recovered.message().find("cannot be read"), std::string::npos) << recovered.message();
   EXPECT_TRUE(fs::exists(autosavePath(shotPath)));
 }
