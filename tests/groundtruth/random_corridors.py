@@ -1039,12 +1039,40 @@ def make_one(seed, outdir, size_scale=1.0, render=True, mask=False, threads=2):
 
 # Cameras the photo was not taken from, in the model frame (make_corridors.py's kinds):
 # mid-corridor looking ahead; a quarter in, turned 35 degrees to the left wall; near the
-# far end, looking back. At the photo's eye height, on the centre line.
+# far end, looking back. At the photo's eye height, on the centre line, where a person
+# could stand: a place within VIEW_CLEARANCE_M of a free-standing or hanging object's box
+# (a person, a cabinet, a hanging lamp at eye height) moves along the corridor to the
+# nearest clear one (until 2026-12-05 it did not: 119 of TUNE 0-599's 1800 views stood
+# in or against an object, 15 inside one, and POV-Ray's frame was the object's inside).
 NOVEL_VIEW_WIDTH = 640
+VIEW_CLEARANCE_M = 0.5
+
+
+def clear_eye(s, eye):
+    """The nearest eye along the corridor (z) to `eye` that is VIEW_CLEARANCE_M or more from
+    every object not on a wall, kept 0.3 m inside the box's far end and before its near end."""
+    boxes = []
+    for ob in s["objects"]:
+        if ob["on"] in ("left_wall", "right_wall", "far_wall"):
+            continue
+        (w, h, d), (x, y, z) = ob["size_m"], ob["place_m"]
+        boxes.append((x, z, w / 2 + VIEW_CLEARANCE_M, d / 2 + VIEW_CLEARANCE_M, y - 0.1, y + h + 0.1))
+
+    def clear(z):
+        return not any(abs(eye[0] - x) <= hx and abs(z - bz) <= hz and y0 <= eye[1] <= y1 for x, bz, hx, hz, y0, y1 in boxes)
+
+    lo, hi = -s["length"] + 0.3, min(s["box_near"], 0.0) - 0.3
+    for step in range(0, 121):
+        for z in (eye[2] + 0.05 * step, eye[2] - 0.05 * step):
+            if lo <= z <= hi and clear(z):
+                return [eye[0], eye[1], z]
+    return eye
+
+
 NOVEL_VIEWS = {
-    "ahead": lambda s: ([0.0, s["eye"][1], -s["length"] / 2.0], [0.0, 0.0, 0.0]),
-    "turned": lambda s: ([0.0, s["eye"][1], -s["length"] / 4.0], [35.0, 0.0, 0.0]),
-    "back": lambda s: ([0.0, s["eye"][1], -s["length"] + 1.0], [180.0, 0.0, 0.0]),
+    "ahead": lambda s: (clear_eye(s, [0.0, s["eye"][1], -s["length"] / 2.0]), [0.0, 0.0, 0.0]),
+    "turned": lambda s: (clear_eye(s, [0.0, s["eye"][1], -s["length"] / 4.0]), [35.0, 0.0, 0.0]),
+    "back": lambda s: (clear_eye(s, [0.0, s["eye"][1], -s["length"] + 1.0]), [180.0, 0.0, 0.0]),
 }
 
 
