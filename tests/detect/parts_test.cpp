@@ -130,22 +130,28 @@ Camera turnedCamera() {
   return Camera{glm::transpose(yaw * pitch), {0.2, 1.5, 0}, 600.0, {320, 240}};
 }
 
-TEST(DetectParts, ManhattanFrameOfProjectedBoxLines) {
-  const Camera cam = turnedCamera();
+// Forty lines of each family of a box seen by `cam`: across the corridor, along it,
+// vertical, at places drawn from `rng`.
+std::vector<LineSegment> projectedBoxLines(const Camera& cam, std::mt19937& rng) {
   std::vector<LineSegment> segments;
-  std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   const auto add = [&](glm::dvec3 a, glm::dvec3 b) {
     const glm::dvec2 pa = cam.project(a), pb = cam.project(b);
     segments.push_back({pa, pb, glm::length(pb - pa)});
   };
-  // Forty lines of each family: across the corridor, along it, vertical.
   for (int i = 0; i < 40; ++i) {
     const double z = 6 + 4 * u(rng), x = 1.2 * u(rng), y = 1.5 + 1.4 * u(rng);
     add({-1.0, y, z}, {1.0, y, z});
     add({x, y, z}, {x, y, z + 2});
     add({x, 0.2, z}, {x, 2.6, z});
   }
+  return segments;
+}
+
+TEST(DetectParts, ManhattanFrameOfProjectedBoxLines) {
+  const Camera cam = turnedCamera();
+  std::mt19937 rng(3);
+  const std::vector<LineSegment> segments = projectedBoxLines(cam, rng);
   auto frame = estimateManhattanFrame(segments, PinholeCamera{cam.f, cam.pp}, cv::Size(640, 480));
   ASSERT_TRUE(frame.ok()) << frame.message();
   EXPECT_LT(glm::length(frame->corridor.pixel() - cam.vanishing({0, 0, 1})), 0.01);
@@ -164,19 +170,9 @@ TEST(DetectParts, ManhattanFrameOfProjectedBoxLines) {
 // lines' (before: 4-10 degrees on such corridors, "scattered", and no corridor found).
 TEST(DetectParts, ShortEdgesAtTheVanishingPointDoNotScatterItsLines) {
   const Camera cam = turnedCamera();
-  std::vector<LineSegment> segments;
   std::mt19937 rng(5);
+  std::vector<LineSegment> segments = projectedBoxLines(cam, rng);
   std::uniform_real_distribution<double> u(-1, 1);
-  const auto add = [&](glm::dvec3 a, glm::dvec3 b) {
-    const glm::dvec2 pa = cam.project(a), pb = cam.project(b);
-    segments.push_back({pa, pb, glm::length(pb - pa)});
-  };
-  for (int i = 0; i < 40; ++i) {
-    const double z = 6 + 4 * u(rng), x = 1.2 * u(rng), y = 1.5 + 1.4 * u(rng);
-    add({-1.0, y, z}, {1.0, y, z});
-    add({x, y, z}, {x, y, z + 2});
-    add({x, 0.2, z}, {x, 2.6, z});
-  }
   const glm::dvec2 vp = cam.vanishing({0, 0, 1});
   auto clean = estimateManhattanFrame(segments, PinholeCamera{cam.f, cam.pp}, cv::Size(640, 480));
   ASSERT_TRUE(clean.ok()) << clean.message();
