@@ -334,12 +334,18 @@ std::string runsOnInside(int runOn) {
   return std::to_string(runOn) + (runOn == 1 ? " boundary runs" : " boundaries run") + " on inside the far wall's corners";
 }
 
+// What assess says of a box's surfaces (Candidate's fields of the same names).
+struct SurfacesSeen {
+  std::optional<std::string> surfacesAlike;
+  int dividingBoundaries = 0;
+};
+
 // The doubts a found corridor leaves: where the box's evidence is thin. A wrong far
 // wall (a cabinet's front, a doorway nearer the camera) has the sides of a rectangle,
 // but the boundaries do not run on from its corners across the walls. Returns the
-// first doubt about its surfaces (Candidate::surfacesAlike).
-std::optional<std::string> assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& far,
-                                  const std::array<RefinedBoundary, kBoundaryCount>& rays, int& dividing) {
+// first doubt about its surfaces and how many boundaries divide two surfaces.
+SurfacesSeen assess(CorridorDetection& d, const FarWallSearch& s, const RefinedSection& far,
+                    const std::array<RefinedBoundary, kBoundaryCount>& rays) {
   std::optional<std::string> surfacesAlike;
   // The boundaries start at the far wall's corners; where they run on inside it the
   // rectangle is a section nearer the camera (a band, a doorway, a lamp's light).
@@ -364,7 +370,7 @@ std::optional<std::string> assess(CorridorDetection& d, const FarWallSearch& s, 
   const auto w = [&](int k) { return s.work.toWorking(d.corners[k].px); };
   constexpr std::array<std::array<int, 2>, kBoundaryCount> kBoundaryEnds{{{P3, P5}, {P4, P6}, {P1, P7}, {P2, P8}}};
   const double shortSide = std::min(s.photo.size().width, s.photo.size().height);
-  dividing = 0;
+  int dividing = 0;
   for (const auto& [farCorner, nearCorner] : kBoundaryEnds) {
     dividing += glm::length(d.corners[farCorner].px - d.corners[nearCorner].px) >= kMinJudgedBoundaryOfShortSide * shortSide &&
                 surfaceStep(s.work, w(farCorner), w(nearCorner)).share >= kSureBoundaryStepShare;
@@ -399,7 +405,7 @@ std::optional<std::string> assess(CorridorDetection& d, const FarWallSearch& s, 
     }
   }
   d.confident = d.doubts.empty();
-  return surfacesAlike;
+  return {surfacesAlike, dividing};
 }
 
 // Each far corner (P1..P4, the Quad's order): the boundary that runs on from it and the
@@ -608,9 +614,8 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   }
   if (!allFinite(d.corners)) return makeError("the fitted corners are degenerate");
   d.found = true;
-  int dividing = 0;
-  std::optional<std::string> surfacesAlike = assess(d, s, far, rays, dividing);
-  Candidate c{std::move(d), 0.0, std::move(surfacesAlike), dividing};
+  SurfacesSeen seen = assess(d, s, far, rays);
+  Candidate c{std::move(d), 0.0, std::move(seen.surfacesAlike), seen.dividingBoundaries};
   for (int k = 0; k < 4; ++k) c.support += far.sides[k].coverage / 8 + (rays[k].fit ? rays[k].fit->coverage : 0.0) / 8;
   return c;
 }
