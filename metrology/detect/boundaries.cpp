@@ -207,6 +207,9 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
   constexpr std::array<int, kBoundaryCount> kQuadrantOf = {1, 0, 2, 3};
   std::array<std::vector<std::pair<double, int>>, kBoundaryCount> peaks;  // strength, bin
   int missing = -1;
+  const auto notFound = [](int b) {
+    return makeError(std::string("no ") + boundaryName(b) + " boundary (floor, walls and ceiling look alike)");
+  };
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
     const double q0 = horizonAngle + kQuadrantOf[boundary] * kPi / 2;
     const double margin = kQuadrantMarginDeg * kPi / 180;
@@ -222,10 +225,7 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     if (strongest < kMinContrast) {
       // One quadrant without a step (a floor the walls' colour) is where the other three
       // put it; two are not found.
-      if (missing >= 0 || !sectionPoints) {
-        return makeError(std::string("no ") + boundaryName(missing >= 0 ? missing : boundary) +
-                         " boundary (floor, walls and ceiling look alike)");
-      }
+      if (missing >= 0 || !sectionPoints) return notFound(missing >= 0 ? missing : boundary);
       missing = boundary;
       continue;
     }
@@ -293,7 +293,7 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     return true;
   };
   if (missing >= 0) {
-    if (!imply(missing)) return makeError(std::string("no ") + boundaryName(missing) + " boundary (floor, walls and ceiling look alike)");
+    if (!imply(missing)) return notFound(missing);
   } else if (sectionPoints) {
     int edgeless = -1, count = 0;
     for (int b = 0; b < kBoundaryCount; ++b) {

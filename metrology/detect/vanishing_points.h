@@ -22,8 +22,8 @@ struct VanishingPoint {
   glm::dvec3 point{0, 0, 1};  // homogeneous image point, unit length; z == 0 at infinity
   int inlierCount = 0;
   double inlierLengthPx = 0;  // summed length of the segments that point at it
-  double rmsAngleDeg = 0;     // RMS angle between inlier segments and the lines to the point
-                              // (those away from a finite point: rmsAngleDeg in the .cpp)
+  double rmsAngleDeg = 0;     // RMS angle between inlier segments and the lines to the point,
+                              // over those away from it (see estimateManhattanFrame's .cpp)
   double confidence = 0;      // 0..1, see estimateManhattanFrame
   bool isFinite() const { return std::abs(point.z) > 1e-9; }
   glm::dvec2 pixel() const { return {point.x / point.z, point.y / point.z}; }
