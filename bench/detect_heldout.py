@@ -110,7 +110,39 @@ def summarise(rows, key):
         "box_visible": len(box), "no_corridor_box_visible": len(none_box), "no_corridor_box_visible_seeds": none_box,
         "near_median_px_written": statistics.median(near) if near else None,
         "detect_s_mean": statistics.mean(x["detect_s"] for x in res) if res else None,
+        "where_missed": where_missed(rows, key),
     }
+
+
+# The classes of `where_missed`: by the far wall's error (median of P1..P4), or none written.
+ERROR_CLASSES = (("right (<= 2 px)", 0, RIGHT_PX), ("near miss (2-5 px)", RIGHT_PX, 5), ("5-15 px", 5, 15),
+                 ("over 15 px", 15, float("inf")))
+
+
+def where_missed(rows, key):
+    """Where the misses are: the answers by their far-wall error, and the right share by
+    the kinds of scene the generator draws (the far end, a far corner hidden, a skirting
+    board, the frame), each as [right, scenes]."""
+    by_error = {}
+    for name, lo, hi in ERROR_CLASSES:
+        by_error[name] = sum(1 for r in rows if r[key]["far_median_px"] is not None and
+                             (lo < r[key]["far_median_px"] <= hi or (lo == 0 and r[key]["far_median_px"] == 0)))
+    by_error["no corridor (exit 2), box in view"] = sum(1 for r in rows if r[key]["exit"] == 2 and r["box_visible"])
+    by_error["no corridor (exit 2), no box in view"] = sum(1 for r in rows if r[key]["exit"] == 2 and not r["box_visible"])
+    by_error["other exits"] = sum(1 for r in rows if r[key]["exit"] not in (0, 2, 3))
+
+    def split(label_of):
+        out = {}
+        for r in rows:
+            cell = out.setdefault(label_of(r), [0, 0])
+            cell[0] += r[key]["right"]
+            cell[1] += 1
+        return dict(sorted(out.items()))
+    return {"by_error": by_error,
+            "right_by_far_end": split(lambda r: r["far_end"]),
+            "right_by_far_corner_hidden": split(lambda r: "some hidden" if r["hidden"] else "none hidden"),
+            "right_by_skirting": split(lambda r: "skirting board" if r.get("skirting") else "none"),
+            "right_by_frame": split(lambda r: r.get("orientation", "?"))}
 
 
 def pct(x):
@@ -155,7 +187,8 @@ def main():
         with open(base + ".json") as f:
             ans = json.load(f)
         row = {"seed": seed, "image_size": ans["image_size"], "far_end": ans["far_end"], "near_end": ans["near_end"],
-               "box_visible": ans["box_visible"], "hidden": [c for c in FAR if ans["far_corners_hidden"][c]]}
+               "box_visible": ans["box_visible"], "hidden": [c for c in FAR if ans["far_corners_hidden"][c]],
+               "orientation": ans["orientation"], "skirting": bool(ans["materials"]["skirting"])}
         for key, photo in (("clean", base + ".png"), ("noisy", base + "_q70n3.jpg")):
             code, took, found, last = detect(photowalk, photo, ans, args.timeout)
             errs = corner_errors(found, ans["corners_px"])
@@ -202,6 +235,11 @@ def main():
         print("  P5..P8 (the nearest cross-section inside the photo): median %s px over the written"
               % px(s["near_median_px_written"]))
         print("  detect: %.2f s per photo" % (s["detect_s_mean"] or 0))
+        w = s["where_missed"]
+        print("  by far-wall error: " + ", ".join("%s %d" % kv for kv in w["by_error"].items()))
+        for part in ("right_by_far_end", "right_by_far_corner_hidden", "right_by_skirting", "right_by_frame"):
+            print("  right %s: " % part[len("right_by_"):].replace("_", " ") +
+                  ", ".join("%s %d of %d (%s)" % (k, a, b, pct(a / b)) for k, (a, b) in w[part].items()))
     d = summary["clean"]["within_2px_share"] - summary["noisy"]["within_2px_share"]
     print("noisy against clean: within 2 px %+.1f points (target: within 5)" % (-100 * d))
     print("time: render %.0f s wall for %d scenes%s; detect %.0f s wall for %d photos (%d at a time)"
