@@ -23,6 +23,9 @@ constexpr size_t kUpperBoxes = 10;
 constexpr double kMinSideGapPx = 3.0;       // candidates closer than this are one
 constexpr double kMinTopSideCoverage = 0.3;  // the far wall's top and sides stand above most clutter
 constexpr double kMinBottomSideCoverage = 0.15;
+constexpr size_t kAlternatives = 5;  // the next best boxes fitRoomBox returns
+constexpr int kDistinctBoxPx = 3;    // boxes whose four sides are all within this are one
+constexpr size_t kKept = kAlternatives + 3;  // kept while searching: a kept box can be displaced
 
 // The homography from the rectified plane (origin at the vanishing point, x towards
 // the horizontal point, y towards the vertical one, one unit = one working pixel at
@@ -336,11 +339,11 @@ RayStart boundaryThrough(const Rectified& r, const RayTable& rays, int x, int y)
   return best;
 }
 
-// The best box of the candidates. Its score: the four sides' edge shares, and more,
-// the four boundaries' starts at its corners, the weakest counted again.
+// The best boxes of the candidates. Their score: the four sides' edge shares, and
+// more, the four boundaries' starts at its corners, the weakest counted again.
 class BoxSearch {
  public:
-  BoxSearch(const Rectified& r, const RayTable& rays) : r_(r), rays_(rays) { best_.score = -1e9; }
+  BoxSearch(const Rectified& r, const RayTable& rays) : r_(r), rays_(rays) {}
 
   // Boundaries: floor-left (bottom-left corner), floor-right, ceiling-left, ceiling-right.
   void consider(int x0, int x1, int y0, int y1, const std::array<RayStart, 4>& boundary) {
@@ -358,14 +361,7 @@ class BoxSearch {
     double starts = 0, weakest = 1;
     for (auto [out, in] : boundary) starts += out - 0.5 * in, weakest = std::min(weakest, out - 0.5 * in);
     const double score = (side[0] + side[1] + side[2] + side[3]) / 8 + starts / 4 + weakest / 2;
-    if (score <= best_.score) return;
-    found_ = true;
-    best_.score = score;
-    best_.sideCoverage = side;
-    for (int b = 0; b < 4; ++b) best_.rayOutside[b] = boundary[b].first, best_.rayInside[b] = boundary[b].second;
-    const std::array<glm::dvec2, 4> corners = {glm::dvec2(x0, y0), glm::dvec2(x1, y0), glm::dvec2(x0, y1),
-                                               glm::dvec2(x1, y1)};
-    for (int k = 0; k < 4; ++k) best_.corners[k] = apply(r_.toImage, corners[k]);
+    keep({score, seen_++, {x0, x1, y0, y1}, side, boundary});
   }
 
   // Every combination of the candidates; then, for the upper boxes (top and the
@@ -419,15 +415,59 @@ class BoxSearch {
                  {boundaryThrough(r_, rays_, u.x0, y1), boundaryThrough(r_, rays_, u.x1, y1), ceilingLeftRay, ceilingRightRay});
       }
     }
-    if (!found_) return std::nullopt;
-    return best_;
+    if (kept_.empty()) return std::nullopt;
+    std::sort(kept_.begin(), kept_.end(), [](const Kept& a, const Kept& b) { return better(a, b); });
+    RoomBox best = boxOf(kept_.front());
+    for (size_t i = 1; i < kept_.size() && best.alternatives.size() < kAlternatives; ++i) {
+      best.alternatives.push_back(boxOf(kept_[i]));
+    }
+    return best;
   }
 
  private:
+  struct Kept {
+    double score;
+    long order;                  // of consideration: of equal scores the first is better
+    std::array<int, 4> sides;    // x0, x1, y0, y1 on the rectified photo
+    std::array<double, 4> coverage;
+    std::array<RayStart, 4> boundary;
+  };
+  static bool better(const Kept& a, const Kept& b) { return a.score > b.score || (a.score == b.score && a.order < b.order); }
+
+  // The best boxes, each a few pixels from the others: one near a kept box replaces it
+  // when better; else it is kept while there is room or when it beats the worst kept.
+  void keep(const Kept& box) {
+    for (Kept& k : kept_) {
+      bool near = true;
+      for (int i = 0; i < 4; ++i) near &= std::abs(box.sides[i] - k.sides[i]) <= kDistinctBoxPx;
+      if (!near) continue;
+      if (better(box, k)) k = box;
+      return;
+    }
+    if (kept_.size() < kKept) {
+      kept_.push_back(box);
+      return;
+    }
+    auto worst = std::min_element(kept_.begin(), kept_.end(), [](const Kept& a, const Kept& b) { return better(b, a); });
+    if (better(box, *worst)) *worst = box;
+  }
+
+  RoomBox boxOf(const Kept& k) const {
+    RoomBox box;
+    box.score = k.score;
+    box.sideCoverage = k.coverage;
+    for (int b = 0; b < 4; ++b) box.rayOutside[b] = k.boundary[b].first, box.rayInside[b] = k.boundary[b].second;
+    const auto [x0, x1, y0, y1] = k.sides;
+    const std::array<glm::dvec2, 4> corners = {glm::dvec2(x0, y0), glm::dvec2(x1, y0), glm::dvec2(x0, y1),
+                                               glm::dvec2(x1, y1)};
+    for (int c = 0; c < 4; ++c) box.corners[c] = apply(r_.toImage, corners[c]);
+    return box;
+  }
+
   const Rectified& r_;
   const RayTable& rays_;
-  RoomBox best_;
-  bool found_ = false;
+  std::vector<Kept> kept_;
+  long seen_ = 0;
 };
 
 }  // namespace

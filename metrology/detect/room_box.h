@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -23,6 +24,10 @@ struct RoomBox {
   std::array<double, 4> rayOutside{};
   std::array<double, 4> rayInside{};
   double score = 0;
+  // The next best boxes (up to five, best first), no two with all four sides within 3 px
+  // of each other on the rectified photo: a person before a far corner, or a bench along
+  // the foot, can make a nearer rectangle of clutter's edges score best.
+  std::vector<RoomBox> alternatives;
 };
 
 // Every far-wall rectangle of a box corridor has its top and bottom through the
