@@ -114,19 +114,19 @@ def summarise(rows, key):
     }
 
 
-# The classes of `where_missed`: by the far wall's error (median of P1..P4), or none written.
-ERROR_CLASSES = (("right (<= 2 px)", 0, RIGHT_PX), ("near miss (2-5 px)", RIGHT_PX, 5), ("5-15 px", 5, 15),
-                 ("over 15 px", 15, float("inf")))
+# The classes of `where_missed` by the far wall's error (median of P1..P4): each up to its bound.
+ERROR_CLASSES = (("right (<= 2 px)", RIGHT_PX), ("near miss (2-5 px)", 5), ("5-15 px", 15), ("over 15 px", float("inf")))
 
 
 def where_missed(rows, key):
     """Where the misses are: the answers by their far-wall error, and the right share by
     the kinds of scene the generator draws (the far end, a far corner hidden, a skirting
     board, the frame), each as [right, scenes]."""
-    by_error = {}
-    for name, lo, hi in ERROR_CLASSES:
-        by_error[name] = sum(1 for r in rows if r[key]["far_median_px"] is not None and
-                             (lo < r[key]["far_median_px"] <= hi or (lo == 0 and r[key]["far_median_px"] == 0)))
+    by_error = {name: 0 for name, _ in ERROR_CLASSES}
+    for r in rows:
+        err = r[key]["far_median_px"]
+        if err is not None:
+            by_error[next(name for name, bound in ERROR_CLASSES if err <= bound)] += 1
     by_error["no corridor (exit 2), box in view"] = sum(1 for r in rows if r[key]["exit"] == 2 and r["box_visible"])
     by_error["no corridor (exit 2), no box in view"] = sum(1 for r in rows if r[key]["exit"] == 2 and not r["box_visible"])
     by_error["other exits"] = sum(1 for r in rows if r[key]["exit"] not in (0, 2, 3))

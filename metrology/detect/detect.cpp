@@ -1180,9 +1180,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     std::vector<Candidate> alternatives;
     for (const RoomBox& alt : box->alternatives) {
       auto done = completeFromFarWall(search, d, alt.corners, glm::length(alt.corners[2] - search.vpWork));
-      if (!done) continue;
-      doubt(done->detection, "the far wall is another of the rectangles the room's box fit found, not its best");
-      alternatives.push_back(std::move(*done));
+      if (done) alternatives.push_back(std::move(*done));
     }
     const Candidate* chosen = &*fromBox;
     for (const Candidate& alt : alternatives) {
@@ -1193,7 +1191,10 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
         chosen = &alt;
       }
     }
-    if (chosen != &*fromBox) fromBox = *chosen;
+    if (chosen != &*fromBox) {
+      fromBox = *chosen;
+      doubt(fromBox->detection, "the far wall is another of the rectangles the room's box fit found, not its best");
+    }
   }
   if (fromBox && looseVanishingPoint) doubt(fromBox->detection, *looseVanishingPoint);
   // The room's box fitted to the edges stands where the boundaries are partly hidden,
