@@ -86,9 +86,11 @@ constexpr double kFootStepWeight = 0.25;
 // A floor boundary's step in bestFoot is taken over its whole length, but no more than
 // this many times its inner half's (from the far wall's corner): a line that meets an
 // edge only far out, a side opening's foot near the photo's border, is no evidence for
-// that corner (TUNE 278: a ray 9 px above the true foot scored 72 against 20 along a
-// bright opening's foot, 4 in its inner half). Objects along the walls near the camera
-// hide the outer half (DetectParts.RoomBoxFindsTheFarWallBehindClutter's cabinets).
+// that corner (TUNE 278, by a copy of the score: a ray 9 px above the true foot scored
+// 72 against 20 along a bright opening's foot, 4 in its inner half). Objects along the
+// walls near the camera hide the outer half (DetectParts.RoomBoxFindsTheFarWallBehindClutter's
+// cabinets; held to the second-weakest quarter, that foot moved 122 px). TUNE 0-599:
+// +2/-0 clean, +2/-1 noisy.
 constexpr double kBoundaryOfInnerHalf = 2.0;
 // A skirting board under a far-wall foot found (skirtingBelow): the wall above runs
 // on within this of one colour, or within half the board's own edge for a guess (a
@@ -665,7 +667,8 @@ double boundaryStep(const WorkingImage& work, glm::dvec2 a, glm::dvec2 b) {
 // as it lost on 0-299). With the top and sides kept, each foot (through the horizontal
 // point, its corners on the sides, the horizon within the shares above) is scored by
 // how consistently the two floor boundaries through its corners divide surfaces, over
-// their length to the photo's border (short ones count less), and the foot itself a
+// their length to the photo's border (short ones count less; each held to its inner
+// half, boundaryStep), and the foot itself a
 // little. Returns the best foot's corners (P3, P4), its score and `current`'s.
 struct FootSearch {
   glm::dvec2 left, right;
