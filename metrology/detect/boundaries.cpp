@@ -15,6 +15,13 @@ constexpr int kBins = 8192;              // 0.044 degree
 constexpr int kCoarseWindowBins = 64;    // 2.8 degrees each side: finds the step among textures
 constexpr int kFineWindowBins = 8;       // 0.35 degree each side: places it
 constexpr double kFineRangeDeg = 1.0;
+// footOfBand: a band 0.3-4 degrees across (from the vanishing point), its foot's step at
+// least 0.3 as sharp as its top's, its colour kBandGrey from the wall's, the floor's
+// beside it and the floor's over kBandFloorDeg beyond (grey levels, as skirtingBelow's),
+// and so, in its own colour, at three quarters of kBandPlaces places along the ray.
+constexpr double kBandMinDeg = 0.3, kBandMaxDeg = 4.0, kBandStepShare = 0.3, kBandGrey = 12.0, kBandAlongShare = 0.75,
+                 kBandFloorDeg = 2.0;
+constexpr int kBandPlaces = 8;
 constexpr double kQuadrantMarginDeg = 3.0;
 constexpr double kMinContrast = 1.0;
 // Each quadrant's strongest steps tried together when its strongest do not make a box,
@@ -96,6 +103,19 @@ class AngularProfile {
   // boundary at the start of `bin`, in units of each channel's spread. Colour only
   // when `colourOnly`: an edge's own gradient band (Sobel spreads it over three
   // pixels) would otherwise pull a narrow step towards the smoother side.
+  // Mean colour (B, G, R) of bins [from, to) (any integers; wrapped), or nullopt
+  // where they hold no pixels.
+  std::optional<std::array<double, 3>> meanColour(int from, int to) const {
+    if (to <= from) std::swap(from, to);
+    const int a = (from % kBins + kBins) % kBins + kBins, b = a + (to - from);
+    if (b > 3 * kBins) return std::nullopt;
+    const double n = count(a, b);
+    if (n < 20) return std::nullopt;
+    std::array<double, 3> m{};
+    for (int c = 0; c < 3; ++c) m[c] = (prefixSum_[b][c] - prefixSum_[a][c]) / n;
+    return m;
+  }
+
   double step(int bin, int window, bool colourOnly = false) const {
     // Into the middle turn, so both b - window and b + window stay in the arrays.
     const int b = (bin % kBins + kBins) % kBins + kBins;
@@ -304,8 +324,80 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
   return out;
 }
 
+namespace {
+
+// A floor boundary found at a band's top (a skirting board's, along the walls): the
+// step beyond it, away from the horizon, where the band ends on the floor. Looked for
+// within kBandMaxDeg of `angle` (the step found, radians); taken at the first step at
+// least kBandStepShare as sharp, a local maximum, where the band's mean colour differs
+// from the wall's inside it and the floor's beyond it by kBandGrey or more, and does so,
+// in one colour, at kBandAlongShare of the places sampled along the ray's outer half (a
+// board runs along the wall; a checkered floor's first row of tiles is two colours:
+// corridor_e). TUNE 0-599: +5/-1 clean, +3/-0 noisy (open ends whose feet sat on the
+// side boards' tops: 157, 161, 258, 420, 525); at half the places and without the wider
+// floor's test, +11/-2 and +10/-2, but the project's corridor_b and corridor_e lost
+// their feet to a plank and a row of tiles.
+std::optional<double> footOfBand(const WorkingImage& image, const AngularProfile& profile, glm::dvec2 vp, double angle,
+                                 double horizonAngle) {
+  const int fb = binOf(angle + 0.5 * 2 * kPi / kBins);
+  const auto offHorizon = [&](int bin) { return std::abs(std::sin(angleOf(bin) - horizonAngle)); };
+  const int out = offHorizon(fb + 10) > offHorizon(fb - 10) ? 1 : -1;
+  const double found = profile.step(fb, kFineWindowBins, true);
+  const int minSep = static_cast<int>(kBandMinDeg / 360.0 * kBins), maxSep = static_cast<int>(kBandMaxDeg / 360.0 * kBins);
+  const auto apart = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) + std::pow(a[2] - b[2], 2));
+  };
+  for (int k = minSep; k <= maxSep; ++k) {
+    const int bin = fb + out * k;
+    const double sharp = profile.step(bin, kFineWindowBins, true);
+    if (sharp < kBandStepShare * found) continue;
+    if (sharp < profile.step(bin - 1, kFineWindowBins, true) || sharp < profile.step(bin + 1, kFineWindowBins, true)) continue;
+    const auto wall = profile.meanColour(fb - out * kFineWindowBins, fb);
+    const auto band = profile.meanColour(fb + out * 2, bin - out * 2);
+    const auto floor = profile.meanColour(bin, bin + out * kFineWindowBins);
+    if (!wall || !band || !floor || apart(*band, *wall) < kBandGrey || apart(*band, *floor) < kBandGrey) continue;
+    // Nor like the floor further out (a wooden floor's first plank: corridor_b).
+    const auto floorWide = profile.meanColour(bin, bin + out * static_cast<int>(kBandFloorDeg / 360.0 * kBins));
+    if (!floorWide || apart(*band, *floorWide) < kBandGrey) continue;
+    // Along the ray's outer half: the band unlike the wall and the floor in most places.
+    const double aWall = angleOf(fb), aFloor = angleOf(bin), aBand = 0.5 * (aWall + aFloor);
+    const double halfBand = 0.5 * std::abs(aFloor - aWall);
+    const double reach = distanceToBorder(image, vp, {std::cos(aBand), std::sin(aBand)});
+    const auto colourAt = [&](double a, double r) -> std::optional<glm::dvec3> {
+      const glm::dvec2 q = vp + r * glm::dvec2(std::cos(a), std::sin(a));
+      if (!image.contains(q, 1)) return std::nullopt;
+      const cv::Vec3b c = image.bgr.at<cv::Vec3b>(static_cast<int>(q.y + 0.5), static_cast<int>(q.x + 0.5));
+      return glm::dvec3(c[0], c[1], c[2]);
+    };
+    std::vector<std::array<glm::dvec3, 3>> places;  // wall, band, floor
+    for (int i = 0; i < kBandPlaces; ++i) {
+      const double r = reach * (0.5 + 0.45 * i / (kBandPlaces - 1));
+      const double margin = std::max(2.0 / r, halfBand), sign = aFloor > aWall ? 1.0 : -1.0;
+      const auto w = colourAt(aWall - sign * margin, r), b = colourAt(aBand, r), f = colourAt(aFloor + sign * margin, r);
+      if (w && b && f) places.push_back({*w, *b, *f});
+    }
+    if (places.size() < kBandPlaces / 2) continue;
+    // The band's colour where it is typical (the middle of its samples by brightness):
+    // a board is one colour along the wall, a checkered floor's first row of tiles two.
+    std::vector<glm::dvec3> bands;
+    for (const auto& p : places) bands.push_back(p[1]);
+    std::nth_element(bands.begin(), bands.begin() + bands.size() / 2, bands.end(),
+                     [](const glm::dvec3& a, const glm::dvec3& b) { return a.x + a.y + a.z < b.x + b.y + b.z; });
+    const glm::dvec3 typical = bands[bands.size() / 2];
+    int shown = 0;
+    for (const auto& [w, b, f] : places) {
+      if (glm::length(b - w) >= kBandGrey && glm::length(b - f) >= kBandGrey && glm::length(b - typical) < kBandGrey) ++shown;
+    }
+    if (shown < kBandAlongShare * places.size()) continue;
+    return wrapAngle(angleOf((bin % kBins + kBins) % kBins) - 0.5 * 2 * kPi / kBins);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vp, const std::array<double, kBoundaryCount>& angle,
-                                  const std::array<double, kBoundaryCount>& reachRad) {
+                                  const std::array<double, kBoundaryCount>& reachRad, std::optional<double> horizonAngle) {
   const AngularProfile profile(image, vp);
   RecedingBoundaries out;
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
@@ -326,6 +418,12 @@ RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vp, cons
     } else {
       out.angle[boundary] =
           sharpestStepAngle(profile, coarseBin, std::min(reach, static_cast<int>(kFineRangeDeg / 360.0 * kBins)));
+    }
+    if (horizonAngle && boundary <= kFloorRight && coarseStrength >= kMinContrast) {
+      if (auto below = footOfBand(image, profile, vp, out.angle[boundary], *horizonAngle)) {
+        out.angle[boundary] = *below;
+        out.belowBand[boundary] = true;
+      }
     }
     out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
   }

@@ -34,6 +34,8 @@ struct RecedingBoundaries {
   // shows no step, or no edge runs along it (the only one under kMinBoundaryEdgeCoverage);
   // -1 where all four were found.
   int implied = -1;
+  // Taken at the outer edge of a band along the walls (a skirting board's foot).
+  std::array<bool, kBoundaryCount> belowBand{};
 
   glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }
 };
@@ -75,7 +77,8 @@ double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle);
 // step stands out, the angle given.
 RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vanishingPoint,
                                   const std::array<double, kBoundaryCount>& angle,
-                                  const std::array<double, kBoundaryCount>& reachRad);
+                                  const std::array<double, kBoundaryCount>& reachRad,
+                                  std::optional<double> horizonAngle = std::nullopt);
 
 // Distance from `origin` along the unit `direction` to the image border (working pixels).
 double distanceToBorder(const WorkingImage& image, glm::dvec2 origin, glm::dvec2 direction);

@@ -518,7 +518,8 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   {
     std::array<double, kBoundaryCount> around{}, reach{};
     for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
-    const RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach);
+    const glm::dvec2 horizonDir = directionTowards(work.toWorking(d.horizontal.point), s.vpWork);
+    const RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach, std::atan2(horizonDir.y, horizonDir.x));
     std::array<glm::dvec2, kBoundaryCount> stepDirection{};
     for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
     const auto afresh = refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx);
@@ -560,6 +561,9 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
         const int k = kSideCorners[side][1 - farther];
         const glm::dvec3 level = glm::cross(homogeneous(at[farther]), d.horizontal.point);
         if (auto q = intersect(level, far.sides[kVerticalOf[k]].line)) at[1 - farther] = *q;
+      }
+      if ((steps.belowBand[kBoundaryOfCorner[kSideCorners[side][0]]] || steps.belowBand[kBoundaryOfCorner[kSideCorners[side][1]]])) {
+        doubt(d, "the far wall's foot was taken at the foot of a band along the walls, a skirting board's");
       }
       for (int n = 0; n < 2; ++n) {
         const int k = kSideCorners[side][n], b = kBoundaryOfCorner[k];
