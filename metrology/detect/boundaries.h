@@ -74,7 +74,9 @@ double rayEdgeCoverage(const WorkingImage& image, glm::dvec2 vp, double angle);
 // the strongest step of the angular profile within `reachRad` of it, placed by the
 // sharpest colour step near that, as findRecedingBoundaries places them (a tile joint
 // along the floor is an edge but no step: the floor's colour on both sides). Where no
-// step stands out, the angle given.
+// step stands out, the angle given. With `horizonAngle` (radians, the horizon's direction
+// from the vanishing point), a floor boundary found on a band along the walls, a skirting
+// board's top, is taken at the band's foot (RecedingBoundaries::belowBand).
 RecedingBoundaries boundariesNear(const WorkingImage& image, glm::dvec2 vanishingPoint,
                                   const std::array<double, kBoundaryCount>& angle,
                                   const std::array<double, kBoundaryCount>& reachRad,

@@ -562,7 +562,9 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
         const glm::dvec3 level = glm::cross(homogeneous(at[farther]), d.horizontal.point);
         if (auto q = intersect(level, far.sides[kVerticalOf[k]].line)) at[1 - farther] = *q;
       }
-      if ((steps.belowBand[kBoundaryOfCorner[kSideCorners[side][0]]] || steps.belowBand[kBoundaryOfCorner[kSideCorners[side][1]]])) {
+      // (A floor boundary taken at a band's foot, footOfBand, is never a sure one: a lit
+      // strip of floor before a glazed end can pass for a board, TUNE 544.)
+      if (steps.belowBand[kBoundaryOfCorner[kSideCorners[side][0]]] || steps.belowBand[kBoundaryOfCorner[kSideCorners[side][1]]]) {
         doubt(d, "the far wall's foot was taken at the foot of a band along the walls, a skirting board's");
       }
       for (int n = 0; n < 2; ++n) {
