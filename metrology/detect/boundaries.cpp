@@ -99,23 +99,22 @@ class AngularProfile {
     for (int c = 0; c < kChannels; ++c) spread_[c] = std::max(std::sqrt(var[c] / std::max(total, 1.0)), 4.0);
   }
 
-  // Distance between the mean features of the `window` bins before and after the
-  // boundary at the start of `bin`, in units of each channel's spread. Colour only
-  // when `colourOnly`: an edge's own gradient band (Sobel spreads it over three
-  // pixels) would otherwise pull a narrow step towards the smoother side.
-  // Mean colour (B, G, R) of bins [from, to) (any integers; wrapped), or nullopt
-  // where they hold no pixels.
-  std::optional<std::array<double, 3>> meanColour(int from, int to) const {
+  // Mean colour (B, G, R) of the bins between `from` and `to` (either order, any
+  // integers: wrapped), or nullopt where they hold too few pixels.
+  std::optional<glm::dvec3> meanColour(int from, int to) const {
     if (to <= from) std::swap(from, to);
     const int a = (from % kBins + kBins) % kBins + kBins, b = a + (to - from);
     if (b > 3 * kBins) return std::nullopt;
     const double n = count(a, b);
     if (n < 20) return std::nullopt;
-    std::array<double, 3> m{};
-    for (int c = 0; c < 3; ++c) m[c] = (prefixSum_[b][c] - prefixSum_[a][c]) / n;
-    return m;
+    return glm::dvec3(prefixSum_[b][0] - prefixSum_[a][0], prefixSum_[b][1] - prefixSum_[a][1],
+                      prefixSum_[b][2] - prefixSum_[a][2]) / n;
   }
 
+  // Distance between the mean features of the `window` bins before and after the
+  // boundary at the start of `bin`, in units of each channel's spread. Colour only
+  // when `colourOnly`: an edge's own gradient band (Sobel spreads it over three
+  // pixels) would otherwise pull a narrow step towards the smoother side.
   double step(int bin, int window, bool colourOnly = false) const {
     // Into the middle turn, so both b - window and b + window stay in the arrays.
     const int b = (bin % kBins + kBins) % kBins + kBins;
@@ -344,9 +343,6 @@ std::optional<double> footOfBand(const WorkingImage& image, const AngularProfile
   const int out = offHorizon(fb + 10) > offHorizon(fb - 10) ? 1 : -1;
   const double found = profile.step(fb, kFineWindowBins, true);
   const int minSep = static_cast<int>(kBandMinDeg / 360.0 * kBins), maxSep = static_cast<int>(kBandMaxDeg / 360.0 * kBins);
-  const auto apart = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) + std::pow(a[2] - b[2], 2));
-  };
   for (int k = minSep; k <= maxSep; ++k) {
     const int bin = fb + out * k;
     const double sharp = profile.step(bin, kFineWindowBins, true);
@@ -355,10 +351,10 @@ std::optional<double> footOfBand(const WorkingImage& image, const AngularProfile
     const auto wall = profile.meanColour(fb - out * kFineWindowBins, fb);
     const auto band = profile.meanColour(fb + out * 2, bin - out * 2);
     const auto floor = profile.meanColour(bin, bin + out * kFineWindowBins);
-    if (!wall || !band || !floor || apart(*band, *wall) < kBandGrey || apart(*band, *floor) < kBandGrey) continue;
+    if (!wall || !band || !floor || glm::length(*band - *wall) < kBandGrey || glm::length(*band - *floor) < kBandGrey) continue;
     // Nor like the floor further out (a wooden floor's first plank: corridor_b).
     const auto floorWide = profile.meanColour(bin, bin + out * static_cast<int>(kBandFloorDeg / 360.0 * kBins));
-    if (!floorWide || apart(*band, *floorWide) < kBandGrey) continue;
+    if (!floorWide || glm::length(*band - *floorWide) < kBandGrey) continue;
     // Along the ray's outer half: the band unlike the wall and the floor in most places.
     const double aWall = angleOf(fb), aFloor = angleOf(bin), aBand = 0.5 * (aWall + aFloor);
     const double halfBand = 0.5 * std::abs(aFloor - aWall);
@@ -369,10 +365,11 @@ std::optional<double> footOfBand(const WorkingImage& image, const AngularProfile
       const cv::Vec3b c = image.bgr.at<cv::Vec3b>(static_cast<int>(q.y + 0.5), static_cast<int>(q.x + 0.5));
       return glm::dvec3(c[0], c[1], c[2]);
     };
+    const double sign = aFloor > aWall ? 1.0 : -1.0;
     std::vector<std::array<glm::dvec3, 3>> places;  // wall, band, floor
     for (int i = 0; i < kBandPlaces; ++i) {
       const double r = reach * (0.5 + 0.45 * i / (kBandPlaces - 1));
-      const double margin = std::max(2.0 / r, halfBand), sign = aFloor > aWall ? 1.0 : -1.0;
+      const double margin = std::max(2.0 / r, halfBand);
       const auto w = colourAt(aWall - sign * margin, r), b = colourAt(aBand, r), f = colourAt(aFloor + sign * margin, r);
       if (w && b && f) places.push_back({*w, *b, *f});
     }
