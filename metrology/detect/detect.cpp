@@ -426,6 +426,10 @@ SurfacesSeen assess(CorridorDetection& d, const FarWallSearch& s, const RefinedS
 constexpr std::array<int, 4> kBoundaryOfCorner = {kCeilingLeft, kCeilingRight, kFloorLeft, kFloorRight};
 constexpr std::array<int, 4> kVerticalOf = {kLeftSide, kRightSide, kLeftSide, kRightSide};
 
+// The doubt of a foot taken at a band's foot (footOfBand): never a sure one (a lit strip of
+// floor before a glazed end can pass for a board, TUNE 544).
+constexpr const char* kFootAtBandFoot = "the far wall's foot was taken at the foot of a band along the walls, a skirting board's";
+
 // From a far wall found on the working copy (corners in working pixels, `farT` its
 // depth in the cross-section family's terms) to the detection: the far wall's sides
 // and the boundaries beyond it fitted at full resolution, then P5..P8, and the
@@ -435,6 +439,7 @@ constexpr std::array<int, 4> kVerticalOf = {kLeftSide, kRightSide, kLeftSide, kR
 // `hiddenSide`: one far-wall side may show no edge (a cabinet before its foot, a person
 // before a corner); its corners are then where its neighbouring sides meet the fitted
 // boundaries (a corner behind a person is still where its two edges meet).
+
 Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection d, const Quad& farWork, double farT,
                                       const std::optional<Quad>& nearHint = std::nullopt, bool allowHiddenSide = false) {
   const PinholeView& photo = s.photo;
@@ -491,18 +496,41 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     // The hidden side's corners where the boundary through each meets the side beside it.
     constexpr std::array<std::array<int, 2>, 4> kCornerSides{{{kTopSide, kLeftSide}, {kTopSide, kRightSide},
                                                              {kBottomSide, kLeftSide}, {kBottomSide, kRightSide}}};
+    // Each boundary through a corner of the hidden side: the ray fitted through it. With the
+    // foot hidden (a person before it), a floor's ray through the corner guessed is often a
+    // skirting board's top; looked for afresh, as at an open end (below), one found at a
+    // band's foot is taken instead.
+    std::array<std::optional<EdgeLine>, kBoundaryCount> line;
+    for (int b = 0; b < kBoundaryCount; ++b) line[b] = rays[b].fit;
+    bool atBandFoot = false;
+    if (hidden == kBottomSide) {
+      std::array<double, kBoundaryCount> around{}, reach{};
+      for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
+      const glm::dvec2 horizonDir = directionTowards(work.toWorking(d.horizontal.point), s.vpWork);
+      const RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach, std::atan2(horizonDir.y, horizonDir.x));
+      std::array<glm::dvec2, kBoundaryCount> stepDirection{};
+      for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
+      const auto afresh = refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx);
+      for (int b : {kFloorLeft, kFloorRight}) {
+        if (steps.belowBand[b] && afresh[b].fit && afresh[b].fit->coverage >= kSureBoundaryCoverage) {
+          line[b] = afresh[b].fit;
+          atBandFoot = true;
+        }
+      }
+    }
     for (int k : kSideCorners[hidden]) {
       const int b = kBoundaryOfCorner[k];
       const int other = kCornerSides[k][0] == hidden ? kCornerSides[k][1] : kCornerSides[k][0];
-      if (!rays[b].fit) return makeError(std::string("the far wall's ") + kSideNames[hidden] + " edge is hidden and so is its " +
-                                         boundaryName(b) + " boundary");
-      auto p = intersect(rays[b].fit->line, far.sides[other].line);
+      if (!line[b]) return makeError(std::string("the far wall's ") + kSideNames[hidden] + " edge is hidden and so is its " +
+                                     boundaryName(b) + " boundary");
+      auto p = intersect(line[b]->line, far.sides[other].line);
       if (!p) return makeError(std::string("the far wall's ") + kSideNames[hidden] + " corners cannot be found");
       far.corners[k] = *p;
       far.cornerConfidence[k] = 0.5 * far.cornerConfidence[k] + 0.2;
-      d.corners[k] = {*p, far.cornerConfidence[k], std::hypot(rays[b].fit->positionSigmaPx(), far.sides[other].positionSigmaPx())};
+      d.corners[k] = {*p, far.cornerConfidence[k], std::hypot(line[b]->positionSigmaPx(), far.sides[other].positionSigmaPx())};
       throughCorners.angle[b] = std::atan2(p->y - vp.y, p->x - vp.x);
     }
+    if (atBandFoot) doubt(d, kFootAtBandFoot);
     doubt(d, std::string("the far wall's ") + kSideNames[hidden] + " edge is hidden: its corners are where the boundaries meet its sides");
   }
   // Where the walls end before the wall seen beyond them (an open end: a hall's far wall,
@@ -562,10 +590,8 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
         const glm::dvec3 level = glm::cross(homogeneous(at[farther]), d.horizontal.point);
         if (auto q = intersect(level, far.sides[kVerticalOf[k]].line)) at[1 - farther] = *q;
       }
-      // (A floor boundary taken at a band's foot, footOfBand, is never a sure one: a lit
-      // strip of floor before a glazed end can pass for a board, TUNE 544.)
       if (steps.belowBand[kBoundaryOfCorner[kSideCorners[side][0]]] || steps.belowBand[kBoundaryOfCorner[kSideCorners[side][1]]]) {
-        doubt(d, "the far wall's foot was taken at the foot of a band along the walls, a skirting board's");
+        doubt(d, kFootAtBandFoot);
       }
       for (int n = 0; n < 2; ++n) {
         const int k = kSideCorners[side][n], b = kBoundaryOfCorner[k];
