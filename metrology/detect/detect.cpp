@@ -492,6 +492,19 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   }
   // Fitted beyond the far wall, the rays say how well the image bears them out.
   const auto rays = refineBoundaries(photo, vp, cornerDirection, fromRadius, searchPx, stepHalfWidthPx);
+  // The boundaries looked for afresh near the rays through the far corners as they stand:
+  // in each, the sharpest colour step of the angular profile within kEndSearchRad
+  // (boundariesNear: a floor's found on a band along the walls taken at its foot), fitted
+  // at full resolution.
+  const auto boundariesAfresh = [&] {
+    std::array<double, kBoundaryCount> around{}, reach{};
+    for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
+    const glm::dvec2 horizonDir = directionTowards(work.toWorking(d.horizontal.point), s.vpWork);
+    RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach, std::atan2(horizonDir.y, horizonDir.x));
+    std::array<glm::dvec2, kBoundaryCount> stepDirection{};
+    for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
+    return std::pair{std::move(steps), refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx)};
+  };
   if (hidden >= 0) {
     // The hidden side's corners where the boundary through each meets the side beside it.
     constexpr std::array<std::array<int, 2>, 4> kCornerSides{{{kTopSide, kLeftSide}, {kTopSide, kRightSide},
@@ -504,13 +517,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     for (int b = 0; b < kBoundaryCount; ++b) line[b] = rays[b].fit;
     bool atBandFoot = false;
     if (hidden == kBottomSide) {
-      std::array<double, kBoundaryCount> around{}, reach{};
-      for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
-      const glm::dvec2 horizonDir = directionTowards(work.toWorking(d.horizontal.point), s.vpWork);
-      const RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach, std::atan2(horizonDir.y, horizonDir.x));
-      std::array<glm::dvec2, kBoundaryCount> stepDirection{};
-      for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
-      const auto afresh = refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx);
+      const auto [steps, afresh] = boundariesAfresh();
       for (int b : {kFloorLeft, kFloorRight}) {
         if (steps.belowBand[b] && afresh[b].fit && afresh[b].fit->coverage >= kSureBoundaryCoverage) {
           line[b] = afresh[b].fit;
@@ -544,13 +551,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   // the corners found stay the evidence the box is judged by (assess): where the corners
   // moved far, they no longer run on from them, and the answer is not a sure one.
   {
-    std::array<double, kBoundaryCount> around{}, reach{};
-    for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
-    const glm::dvec2 horizonDir = directionTowards(work.toWorking(d.horizontal.point), s.vpWork);
-    const RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach, std::atan2(horizonDir.y, horizonDir.x));
-    std::array<glm::dvec2, kBoundaryCount> stepDirection{};
-    for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
-    const auto afresh = refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx);
+    const auto [steps, afresh] = boundariesAfresh();
     const double sideLength = std::min(glm::length(far.corners[P1] - far.corners[P3]), glm::length(far.corners[P2] - far.corners[P4]));
     for (int side : {kTopSide, kBottomSide}) {
       if (side == hidden) continue;
