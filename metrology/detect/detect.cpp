@@ -439,7 +439,6 @@ constexpr const char* kFootAtBandFoot = "the far wall's foot was taken at the fo
 // `hiddenSide`: one far-wall side may show no edge (a cabinet before its foot, a person
 // before a corner); its corners are then where its neighbouring sides meet the fitted
 // boundaries (a corner behind a person is still where its two edges meet).
-
 Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection d, const Quad& farWork, double farT,
                                       const std::optional<Quad>& nearHint = std::nullopt, bool allowHiddenSide = false) {
   const PinholeView& photo = s.photo;
@@ -495,15 +494,19 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   // The boundaries looked for afresh near the rays through the far corners as they stand:
   // in each, the sharpest colour step of the angular profile within kEndSearchRad
   // (boundariesNear: a floor's found on a band along the walls taken at its foot), fitted
-  // at full resolution.
-  const auto boundariesAfresh = [&] {
+  // at full resolution. Looked for once: the hidden foot's search moves only the floor
+  // boundaries, which the open end's search then does not use (it skips the hidden side).
+  std::optional<std::pair<RecedingBoundaries, std::array<RefinedBoundary, kBoundaryCount>>> lookedAfresh;
+  const auto boundariesAfresh = [&]() -> const auto& {
+    if (lookedAfresh) return *lookedAfresh;
     std::array<double, kBoundaryCount> around{}, reach{};
     for (int b = 0; b < kBoundaryCount; ++b) around[b] = throughCorners.angle[b], reach[b] = kEndSearchRad;
     const glm::dvec2 horizonDir = directionTowards(work.toWorking(d.horizontal.point), s.vpWork);
     RecedingBoundaries steps = boundariesNear(work, s.vpWork, around, reach, std::atan2(horizonDir.y, horizonDir.x));
     std::array<glm::dvec2, kBoundaryCount> stepDirection{};
     for (int b = 0; b < kBoundaryCount; ++b) stepDirection[b] = steps.direction(b);
-    return std::pair{std::move(steps), refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx)};
+    lookedAfresh.emplace(std::move(steps), refineBoundaries(photo, vp, stepDirection, fromRadius, searchPx, stepHalfWidthPx));
+    return *lookedAfresh;
   };
   if (hidden >= 0) {
     // The hidden side's corners where the boundary through each meets the side beside it.
@@ -517,7 +520,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     for (int b = 0; b < kBoundaryCount; ++b) line[b] = rays[b].fit;
     bool atBandFoot = false;
     if (hidden == kBottomSide) {
-      const auto [steps, afresh] = boundariesAfresh();
+      const auto& [steps, afresh] = boundariesAfresh();
       for (int b : {kFloorLeft, kFloorRight}) {
         if (steps.belowBand[b] && afresh[b].fit && afresh[b].fit->coverage >= kSureBoundaryCoverage) {
           line[b] = afresh[b].fit;
@@ -551,7 +554,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   // the corners found stay the evidence the box is judged by (assess): where the corners
   // moved far, they no longer run on from them, and the answer is not a sure one.
   {
-    const auto [steps, afresh] = boundariesAfresh();
+    const auto& [steps, afresh] = boundariesAfresh();
     const double sideLength = std::min(glm::length(far.corners[P1] - far.corners[P3]), glm::length(far.corners[P2] - far.corners[P4]));
     for (int side : {kTopSide, kBottomSide}) {
       if (side == hidden) continue;
