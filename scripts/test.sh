@@ -6,9 +6,12 @@ cd "$(dirname "$0")/.."
 preset=${1:-default}
 scripts/install-deps.sh --with-extras
 scripts/install-tools.sh
-# CI has 30 minutes on 2 cores: it builds everything but the benchmarks.
+# CI has 30 minutes on 2 cores: it builds everything but the benchmarks, with line tables
+# for debug information (-g1) instead of full debug information: the same code (GCC's -g
+# never changes it), backtraces keep their file and line, and a clean build on 2 cores
+# takes 13.0 minutes instead of 15.6 (compiling 1292 s instead of 1584; Ninja, 2026-12-05).
 extra=()
-[[ "${CI:-}" == "true" ]] && extra+=(-DPW_BUILD_BENCH=OFF)
+[[ "${CI:-}" == "true" ]] && extra+=(-DPW_BUILD_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
 cmake --preset "$preset" "${extra[@]}" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
 # CI, and PW_REQUIRE_ALL_TESTS=1: a test that did not run (Skipped: no display, a tool
