@@ -30,24 +30,8 @@ MIN_SHOWN = 0.85
 
 
 def hull_area(points):
-    """Area of the convex hull of 2-D points (monotone chain)."""
-    pts = sorted(set(map(tuple, points)))
-    if len(pts) < 3:
-        return 0.0
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    lower, upper = [], []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    hull = lower[:-1] + upper[:-1]
-    return 0.5 * abs(sum(hull[i][0] * hull[(i + 1) % len(hull)][1] - hull[(i + 1) % len(hull)][0] * hull[i][1]
-                         for i in range(len(hull))))
+    """Area of the convex hull of 2-D points."""
+    return rc.polygon_area(rc.convex_hull([tuple(p) for p in points]))
 
 
 def cabinets(seed, cache):

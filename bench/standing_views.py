@@ -2,7 +2,7 @@
 """Novel views of random corridor scenes, with their objects painted flat and stood up (issues 22, 25).
 
 usage: bench/standing_views.py NOVEL_VIEW_BENCH --seeds A-B[,C-D...] [--cache DIR] [-j N]
-                               [--kinds person,plant,bin] [--save DIR]
+                               [--kinds person,plant,bin[,cabinet][,opening]] [--save DIR]
 
 For each seed (tests/groundtruth/random_corridors.py; cache default build/random-scenes/):
 renders what the cache lacks (the photo, its object-id mask, the novel views from inside
@@ -11,7 +11,9 @@ cutout for each object of the kinds asked (default: the floor's free-standing on
 plants and bins) that the photo shows over 150 px or more with its foot in view (not off
 the photo's edge, nor behind another object): a rectangle 4 px beyond the
 object's pixels in the mask, as a person draws one around it (GrabCut finds the object
-inside); then runs NOVEL_VIEW_BENCH --random on them, which builds each scene with its
+inside); with the kind "opening", a cutout of shape "opening" for each side opening into a
+room that the photo shows over 400 px, its outline the part of it inside the photo, as a
+person clicks a doorway's corners; then runs NOVEL_VIEW_BENCH --random on them, which builds each scene with its
 objects painted flat and, where it has cutouts, stood up, and scores the views against
 POV-Ray's. A scene with no such object gets no standing file and counts in the flat
 figures only.

@@ -21,10 +21,6 @@ namespace {
 using metrology::Measurement;
 
 constexpr double kBehindCameraM = 1.0;  // photo-only: untextured surfaces run on this far behind the eye
-// Synthesized: the corridor runs on this far behind the photo's camera and is closed
-// there by a wall (about where a person taking a photo down a corridor stands with
-// their back to a wall or a door; the photo cannot say).
-constexpr double kClosedBehindCameraM = 3.0;
 constexpr int kMaxExtensionColumns = 4096;
 constexpr int kFaces = 5;               // far wall, left, right, floor, ceiling (Surface 0..4)
 constexpr double kMinPxPerM = 16;       // a texture's least density, where the photo shows little
@@ -300,12 +296,27 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo, const Measurement& measurement,
                                         const std::vector<metrology::Cutout>& cutouts, bool attached,
                                         const ModelOptions& options) {
-  if (cutouts.empty()) return makeCorridorModel(name, photo, measurement, attached, options);
-  auto stood = standUpObjects(photo, measurement, cutouts, options.cutOutCache);
+  std::vector<metrology::Cutout> objects, openings;
+  for (const metrology::Cutout& cutout : cutouts) {
+    (cutout.shape == metrology::CutoutShape::kOpening ? openings : objects).push_back(cutout);
+  }
+  if (objects.empty() && openings.empty()) return makeCorridorModel(name, photo, measurement, attached, options);
+  Result<StoodUp> stood = StoodUp{{}, photo};
+  if (!objects.empty()) stood = standUpObjects(photo, measurement, objects, options.cutOutCache);
   if (!stood) return makeError(name + ": " + stood.message());
   auto model = makeCorridorModel(name, stood->behind, measurement, attached, options);
   if (!model) return model;
   model->standing = std::move(stood->objects);
+  if (openings.empty()) return model;
+  const auto colourOf = [&](Surface s) { return model->meanColor[static_cast<int>(s)]; };
+  RoomColours colours;
+  colours.wall = 0.5f * (colourOf(Surface::kLeftWall) + colourOf(Surface::kRightWall));
+  colours.floor = colourOf(Surface::kFloor);
+  colours.ceiling = colourOf(Surface::kCeiling);
+  auto rooms = openSideRooms(photo, measurement, openings, model->untexturedNearM, colours);
+  if (!rooms) return makeError(name + ": " + rooms.message());
+  for (SideRoom& room : *rooms) room.panels.back().colour = colourOf(room.wall);  // the wall's back
+  model->rooms = std::move(*rooms);
   return model;
 }
 
@@ -337,6 +348,9 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       std::vector<Rect> rects;
       for (const Opening& o : plan.openings) {
         if (o.corridor == static_cast<int>(c) && o.surface == surface) rects.push_back(o.rect);
+      }
+      for (const SideRoom& room : model.rooms) {
+        if (room.wall == surface) rects.push_back(room.opening);
       }
       return rects;
     };
@@ -443,6 +457,38 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                       object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.heightM,
                       object.footM.x, object.footM.z, object.distanceM);
       }
+      scene.info.push_back(line);
+    }
+    // Side openings: the room behind each, its surfaces textured where the photo sees
+    // them through the opening.
+    for (const SideRoom& room : model.rooms) {
+      const std::string label = "room_" + fileSafe(room.name);
+      for (const RoomPanel& part : room.panels) {
+        Panel panel = part.panel;
+        panel.maxCellM = cellM;
+        if (part.image.empty()) {
+          const glm::vec4 color(part.colour, 1.0f);
+          addShape(panelMesh(panel, options.lit ? std::nullopt : std::optional(color)), untextured(part.colour),
+                   label + "_" + part.label);
+          continue;
+        }
+        auto texture = std::make_shared<engine::Texture>();
+        texture->image = std::make_shared<engine::Image>(part.image);
+        texture->url = model.name + "_" + label + "_" + part.label + ".png";
+        texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
+        texture->sourceFromTexCoord = part.sourceFromTexCoord;
+        auto appearance = std::make_shared<engine::Appearance>();
+        appearance->texture = texture;
+        if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
+        addShape(panelMesh(panel), appearance, label + "_" + part.label);
+      }
+      char line[400];
+      const Rect& o = room.opening;
+      std::snprintf(line, sizeof line,
+                    "opened: %s (%s_%s_*), an opening %.2f m wide and %.2f m high in the %s, %.2f m above the floor, "
+                    "with a room behind it %.1f m deep (taken: the photo does not show it)",
+                    room.name.c_str(), model.name.c_str(), label.c_str(), o.s1 - o.s0, o.t1 - o.t0,
+                    room.wall == Surface::kLeftWall ? "left wall" : "right wall", o.t0, room.depthM);
       scene.info.push_back(line);
     }
     // Which parts are synthesized, for people and other viewers (WorldInfo info text).

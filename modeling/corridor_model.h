@@ -12,6 +12,7 @@
 
 #include "base/result.h"
 #include "modeling/layout.h"
+#include "modeling/side_room.h"
 #include "modeling/stand_up.h"
 #include "modeling/synthesis.h"
 #include "engine/scene/camera.h"
@@ -19,6 +20,11 @@
 #include "metrology/measure.h"
 
 namespace pw::modeling {
+
+// Synthesized: the corridor runs on this far behind the photo's camera and is closed
+// there by a wall (about where a person taking a photo down a corridor stands with
+// their back to a wall or a door; the photo cannot say).
+inline constexpr double kClosedBehindCameraM = 3.0;
 
 struct ModelOptions {
   bool lit = false;          // false: photo-lit (no Material, headlight off); true: the seed paper's lighting
@@ -75,6 +81,8 @@ struct CorridorModel {
   // Objects stood up on the floor (stand_up.h); the textures above were cut from the
   // photo with them filled.
   std::vector<StandingObject> standing;
+  // Openings in the side walls with a room behind each (side_room.h).
+  std::vector<SideRoom> rooms;
   // Per surface, for its untextured parts: the mean of the photo's pixels where it
   // shows the surface, averaged as stored (sRGB-encoded, not linear light), 0..1.
   std::array<glm::vec3, 5> meanColor{};
@@ -90,7 +98,8 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
                                         const ModelOptions& options);
 
 // The same with `cutouts` stood up on the floor (stand_up.h): the surfaces are cut from
-// the photo with the objects filled, and the model holds them in `standing`. Errors
+// the photo with the objects filled, and the model holds them in `standing`; cutouts of
+// shape kOpening open the side wall with a room behind (side_room.h), in `rooms`. Errors
 // name the object (and the corridor).
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,
                                         const metrology::Measurement& measurement,

@@ -210,8 +210,11 @@ Status readCutouts(const json& fields, const std::string& where, std::vector<met
       const json& shape = c["shape"];
       if (shape == "box") {
         cutout.shape = metrology::CutoutShape::kBox;
+      } else if (shape == "opening") {
+        cutout.shape = metrology::CutoutShape::kOpening;
       } else if (shape != "flat") {
-        return makeError(at + ": its shape is \"flat\" (a cut-out facing the camera) or \"box\" (a box on the floor)");
+        return makeError(at + ": its shape is \"flat\" (a cut-out facing the camera), \"box\" (a box on the floor) or "
+                              "\"opening\" (a doorway in a side wall, with a room behind it)");
       }
     }
     for (const metrology::Cutout& earlier : cutouts) {
@@ -475,6 +478,7 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
       for (const glm::dvec2& p : c.outlinePx) outline.push_back({p.x, p.y});
       json cutout = {{"name", c.name}, {"outline_px", outline}};
       if (c.shape == metrology::CutoutShape::kBox) cutout["shape"] = "box";
+      if (c.shape == metrology::CutoutShape::kOpening) cutout["shape"] = "opening";
       cutouts.push_back(std::move(cutout));
     }
     doc["cutouts"] = cutouts;

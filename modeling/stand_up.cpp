@@ -99,19 +99,6 @@ cv::Mat objectMask(const cv::Mat& photo, const std::vector<cv::Point>& outline) 
   return mask;
 }
 
-// The model-frame point where the photo pixel's ray meets the plane through `origin`
-// with normal `normal`; nullopt behind the camera or along the plane.
-std::optional<glm::dvec3> onPlane(const Measurement& m, glm::dvec2 photoPx, glm::dvec3 origin, glm::dvec3 normal) {
-  const std::optional<glm::dvec2> pinhole = metrology::undistortPixel(m.camera, photoPx);
-  if (!pinhole) return std::nullopt;
-  const glm::dvec3 ray = metrology::rayThroughPixel(m.camera, m.pose.worldFromCamera, *pinhole);
-  const double along = glm::dot(ray, normal);
-  if (std::abs(along) < 1e-9) return std::nullopt;
-  const double t = glm::dot(origin - m.pose.positionM, normal) / along;
-  if (!(t > 0)) return std::nullopt;
-  return m.pose.positionM + t * ray;
-}
-
 // A face textured with the photo read through the camera at each texel's centre, its
 // alpha the object's mask widened by kHaloPx (`halo`): there the face shows the photo's own
 // pixels about the object, so that from the photo's camera its edge is the photo's (not a
@@ -517,6 +504,17 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
 }
 
 }  // namespace
+
+std::optional<glm::dvec3> onPlane(const Measurement& m, glm::dvec2 photoPx, glm::dvec3 origin, glm::dvec3 normal) {
+  const std::optional<glm::dvec2> pinhole = metrology::undistortPixel(m.camera, photoPx);
+  if (!pinhole) return std::nullopt;
+  const glm::dvec3 ray = metrology::rayThroughPixel(m.camera, m.pose.worldFromCamera, *pinhole);
+  const double along = glm::dot(ray, normal);
+  if (std::abs(along) < 1e-9) return std::nullopt;
+  const double t = glm::dot(origin - m.pose.positionM, normal) / along;
+  if (!(t > 0)) return std::nullopt;
+  return m.pose.positionM + t * ray;
+}
 
 const CutOuts& CutOutCache::get(const cv::Mat& photo, const std::vector<std::vector<cv::Point>>& outlines,
                                 const std::function<CutOuts()>& make) {

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,12 @@ class CutOutCache {
 // objects alone (a check of the outlines, as the editor's at an outline's close: the
 // fill costs about a quarter of a second for a person on a 9-megapixel photo).
 enum class StandUpParts { kObjectsAndFill, kObjectsOnly };
+
+// The model-frame point where the photo pixel's ray (through the lens's distortion) meets
+// the plane through `origin` with normal `normal`; nullopt behind the camera or along the
+// plane.
+std::optional<glm::dvec3> onPlane(const metrology::Measurement& m, glm::dvec2 photoPx, glm::dvec3 origin,
+                                  glm::dvec3 normal);
 
 // Stands up each of `cutouts` in the measured corridor seen in `photo` (BGR, 8 bit).
 // Errors name the object: an outline outside the photo, an object GrabCut and the

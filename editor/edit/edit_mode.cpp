@@ -233,7 +233,10 @@ void EditMode::onKey(app::Shell& shell, const app::KeyEvent& e) {
       setMeasuring(shell, !measuring_);
       break;
     case GLFW_KEY_U:
-      setOutlining(shell, !outlining_);
+      setOutlining(shell, !(outlining_ && outlineShape_ == metrology::CutoutShape::kFlat));
+      break;
+    case GLFW_KEY_O:
+      setOutlining(shell, !(outlining_ && outlineShape_ == metrology::CutoutShape::kOpening), metrology::CutoutShape::kOpening);
       break;
     case GLFW_KEY_ESCAPE:
       if (drag_) endDrag(false);  // the corner goes back to where the drag began

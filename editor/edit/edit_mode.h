@@ -192,13 +192,16 @@ class EditMode : public app::AppMode {
   // stand_up_tool.cpp: U, a rectangle dragged (or a polygon clicked) around an object
   // stands it up in the model (the shot's cutouts), listed, renamed, deleted, drawn,
   // traced ("cutouts").
-  void setOutlining(app::Shell& shell, bool on);
+  // O: the same, an outline around a doorway or an opening in a side wall opens it with
+  // a room behind (a cutout of shape "opening").
+  void setOutlining(app::Shell& shell, bool on, metrology::CutoutShape shape = metrology::CutoutShape::kFlat);
   bool outlineButton(app::Shell& shell, bool down);  // a press or release while outlining (true: taken)
   bool outlineKey(app::Shell& shell, int key);        // Enter, Backspace, Esc on a polygon being clicked (true: taken)
   void standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& outline);
   void deleteCutout(app::Shell& shell, size_t index);
   void setCutoutShape(app::Shell& shell, size_t index, metrology::CutoutShape shape);
   std::optional<modeling::StandingObject> checkStandUp(app::Shell& shell, const metrology::Cutout& cutout);
+  std::optional<modeling::SideRoom> checkOpening(app::Shell& shell, const metrology::Cutout& cutout);
   void drawCutoutOverlay(ImDrawList* list) const;
   void drawCutouts(app::Shell& shell);
   void addCutoutsTrace(app::TraceRow& row) const;
@@ -287,6 +290,7 @@ class EditMode : public app::AppMode {
   std::vector<std::array<char, 64>> nameBuffers_;  // the Measurements list's name fields
   int renaming_ = -1;                               // the one being typed into, or -1
   bool outlining_ = false;                          // U: dragging rectangles stands objects up
+  metrology::CutoutShape outlineShape_ = metrology::CutoutShape::kFlat;  // kOpening: O, opening doorways
   std::optional<glm::dvec2> outlineFrom_;           // where the button went down (photo pixels), while held
   std::vector<glm::dvec2> outlinePolygon_;          // a polygon's points clicked so far (photo pixels)
   std::vector<std::array<char, 64>> cutoutNameBuffers_;

@@ -31,6 +31,7 @@ const char* const kKeys =
     "E                  fit the corners to the photo's edges\n"
     "M                  measure: two clicks (Shift: a height)\n"
     "U                  stand up: drag a rectangle around an object\n"
+    "O                  open: drag a rectangle around a doorway in a side wall\n"
     "Esc                cancel a drag\n"
     "Ctrl+Z             undo\n"
     "Ctrl+Shift+Z, Ctrl+Y  redo\n"

@@ -8,6 +8,9 @@
 // and traced ("cutouts", "outlining"); the 3D preview and W's model stand it up. A
 // rectangle the model cannot stand up (its foot off the photo, above the horizon, beyond
 // the corridor's floor) is refused with the reason, and nothing changes.
+// O, then the same around a doorway or an opening in a side wall, opens the wall there
+// with a room behind it (modeling/side_room.h); its "opening" box in the list makes any
+// cutout one, or an object again.
 #include <imgui.h>
 
 #include <algorithm>
@@ -19,6 +22,8 @@
 #include "editor/app/shell.h"
 #include "editor/edit/edit_mode.h"
 #include "editor/edit/panel_style.h"
+#include "modeling/corridor_model.h"
+#include "modeling/side_room.h"
 #include "modeling/stand_up.h"
 
 namespace pw::edit {
@@ -30,19 +35,22 @@ using nlohmann::ordered_json;
 
 const ImU32 kCutoutColour = IM_COL32(120, 255, 170, 255);
 const ImU32 kCutoutShadow = IM_COL32(0, 0, 0, 200);
+const ImU32 kOpeningColour = IM_COL32(255, 190, 90, 255);  // an opening, not an object
 constexpr double kMinCutoutPx = 4;  // an outline at least this wide and high (photo pixels)
 constexpr double kClickPx = 4;      // a press and release nearer than this (window pixels) is a click: a polygon's point
 constexpr double kCloseRadiusPx = 8;  // a click this near a polygon's first point (window pixels) closes it
 const char* const kOutliningHelp =
     "stand up: drag a rectangle around an object, down to where it stands on the floor, or click a polygon around it; "
     "Esc: stop";
+const char* const kOpeningHelp =
+    "open: drag a rectangle around a doorway or an opening in a side wall, or click its corners; Esc: stop";
 
 ImVec2 im(const glm::dvec2& p) { return {float(p.x), float(p.y)}; }
 
-// "object N" with the first N no cutout is called.
-std::string freeCutoutName(const Shot& shot) {
+// "object N" ("opening N") with the first N no cutout is called.
+std::string freeCutoutName(const Shot& shot, metrology::CutoutShape shape) {
   for (int n = 1;; ++n) {
-    const std::string name = "object " + std::to_string(n);
+    const std::string name = (shape == metrology::CutoutShape::kOpening ? "opening " : "object ") + std::to_string(n);
     if (std::none_of(shot.cutouts.begin(), shot.cutouts.end(), [&](const Cutout& c) { return c.name == name; })) return name;
   }
 }
@@ -54,15 +62,16 @@ std::array<glm::dvec2, 4> rectangle(glm::dvec2 a, glm::dvec2 b) {
 
 }  // namespace
 
-void EditMode::setOutlining(app::Shell& shell, bool on) {
+void EditMode::setOutlining(app::Shell& shell, bool on, metrology::CutoutShape shape) {
   outlining_ = on && doc_.has_value();
+  outlineShape_ = shape;
   outlineFrom_.reset();
   outlinePolygon_.clear();
   if (outlining_) {
     measuring_ = false;
     measureFrom_.reset();
     pickingReference_ = false;
-    shell.showMessage(kOutliningHelp);
+    shell.showMessage(shape == metrology::CutoutShape::kOpening ? kOpeningHelp : kOutliningHelp);
   }
 }
 
@@ -87,8 +96,11 @@ bool EditMode::outlineButton(app::Shell& shell, bool down) {
   }
   if (glm::length(canvas_.toWindow(at) - canvas_.toWindow(from)) < kClickPx) {  // a click: a polygon's first point
     outlinePolygon_.push_back(at);
-    shell.showMessage("stand up: click around the object, down to its foot; the first point again (or Enter) closes it; "
-                      "Backspace: the last point back; Esc: drop it");
+    shell.showMessage(outlineShape_ == metrology::CutoutShape::kOpening
+                          ? "open: click the opening's corners; the first point again (or Enter) closes it; "
+                            "Backspace: the last point back; Esc: drop it"
+                          : "stand up: click around the object, down to its foot; the first point again (or Enter) closes it; "
+                            "Backspace: the last point back; Esc: drop it");
     return true;
   }
   const std::array<glm::dvec2, 4> corners = rectangle(from, at);
@@ -109,11 +121,11 @@ bool EditMode::outlineKey(app::Shell& shell, int key) {
       return true;
     case GLFW_KEY_BACKSPACE:
       outlinePolygon_.pop_back();
-      if (outlinePolygon_.empty()) shell.showMessage(kOutliningHelp);
+      if (outlinePolygon_.empty()) shell.showMessage(outlineShape_ == metrology::CutoutShape::kOpening ? kOpeningHelp : kOutliningHelp);
       return true;
     case GLFW_KEY_ESCAPE:
       outlinePolygon_.clear();
-      shell.showMessage(std::string("stand up: polygon dropped; ") + kOutliningHelp);
+      shell.showMessage(std::string("polygon dropped; ") + (outlineShape_ == metrology::CutoutShape::kOpening ? kOpeningHelp : kOutliningHelp));
       return true;
     default:
       return false;
@@ -139,15 +151,53 @@ std::optional<modeling::StandingObject> EditMode::checkStandUp(app::Shell& shell
   return std::move(stood->objects.front());
 }
 
+// `cutout` placed as an opening now, for its errors (the model builds its room on the
+// preview's worker): the opening, or nothing with the reason said.
+std::optional<modeling::SideRoom> EditMode::checkOpening(app::Shell& shell, const Cutout& cutout) {
+  if (!live_.measurement) {
+    shell.showMessage("open: the corners do not measure yet: " + live_.error);
+    return std::nullopt;
+  }
+  const double nearM = std::max(0.0, live_.measurement->pose.positionM.z) + modeling::kClosedBehindCameraM;
+  auto opening = modeling::placeOpening(*live_.measurement, cutout, nearM);
+  if (!opening) {
+    shell.showMessage("open: " + opening.message());
+    return std::nullopt;
+  }
+  return std::move(*opening);
+}
+
+namespace {
+
+std::string openingText(const std::string& name, const modeling::SideRoom& room) {
+  char said[200];
+  std::snprintf(said, sizeof said, "%s opens the %s: %.2f m wide, %.2f m high, a room %.0f m deep behind it", name.c_str(),
+                room.wall == modeling::Surface::kLeftWall ? "left wall" : "right wall", room.opening.s1 - room.opening.s0,
+                room.opening.t1 - room.opening.t0, room.depthM);
+  return said;
+}
+
+}  // namespace
+
 void EditMode::standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& outline) {
   glm::dvec2 lo = outline.front(), hi = outline.front();
   for (const glm::dvec2& p : outline) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const bool opening = outlineShape_ == metrology::CutoutShape::kOpening;
   if (hi.x - lo.x < kMinCutoutPx || hi.y - lo.y < kMinCutoutPx) {
-    shell.showMessage("stand up: outline the whole object (this outline is too small)");
+    shell.showMessage(opening ? "open: outline the whole opening (this outline is too small)"
+                              : "stand up: outline the whole object (this outline is too small)");
     return;
   }
   Shot after = doc_->shot();
-  Cutout cutout{freeCutoutName(after), outline};
+  Cutout cutout{freeCutoutName(after, outlineShape_), outline, outlineShape_};
+  if (opening) {
+    const std::optional<modeling::SideRoom> room = checkOpening(shell, cutout);
+    if (!room) return;
+    after.cutouts.push_back(std::move(cutout));
+    applyEdit(shell, after, "open " + after.cutouts.back().name);
+    shell.showMessage(openingText(after.cutouts.back().name, *room));
+    return;
+  }
   const std::optional<modeling::StandingObject> object = checkStandUp(shell, cutout);
   if (!object) return;
   char said[160];
@@ -164,6 +214,13 @@ void EditMode::setCutoutShape(app::Shell& shell, size_t index, metrology::Cutout
   Shot after = doc_->shot();
   Cutout& cutout = after.cutouts.at(index);
   cutout.shape = shape;
+  if (shape == metrology::CutoutShape::kOpening) {
+    const std::optional<modeling::SideRoom> room = checkOpening(shell, cutout);
+    if (!room) return;
+    applyEdit(shell, after, "opening " + cutout.name);
+    shell.showMessage(openingText(cutout.name, *room));
+    return;
+  }
   const std::optional<modeling::StandingObject> object = checkStandUp(shell, cutout);
   if (!object) return;
   char said[200];
@@ -246,13 +303,14 @@ void EditMode::drawCutoutOverlay(ImDrawList* list) const {
     }
   }
   for (const Cutout& cutout : doc_->shot().cutouts) {
+    const ImU32 colour = cutout.shape == metrology::CutoutShape::kOpening ? kOpeningColour : kCutoutColour;
     std::vector<ImVec2> ring;
     for (const glm::dvec2& p : cutout.outlinePx) ring.push_back(im(canvas_.toWindow(p)));
     list->AddPolyline(ring.data(), static_cast<int>(ring.size()), kCutoutShadow, ImDrawFlags_Closed, 3.5f);
-    list->AddPolyline(ring.data(), static_cast<int>(ring.size()), kCutoutColour, ImDrawFlags_Closed, 1.5f);
+    list->AddPolyline(ring.data(), static_cast<int>(ring.size()), colour, ImDrawFlags_Closed, 1.5f);
     glm::dvec2 top = cutout.outlinePx.front();
     for (const glm::dvec2& p : cutout.outlinePx) top = p.y < top.y ? p : top;
-    ui::labelOnPlate(list, im(canvas_.toWindow(top) + glm::dvec2(4, -18)), cutout.name, kCutoutColour);
+    ui::labelOnPlate(list, im(canvas_.toWindow(top) + glm::dvec2(4, -18)), cutout.name, colour);
   }
   if (!outlining_) return;
   if (!outlinePolygon_.empty()) {
@@ -277,9 +335,11 @@ void EditMode::drawCutoutOverlay(ImDrawList* list) const {
 
 void EditMode::drawCutouts(app::Shell& shell) {
   const Shot& shot = doc_->shot();
-  if (!ImGui::CollapsingHeader("Standing objects (U)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (ImGui::SmallButton(outlining_ ? "standing up: drag a rectangle or click a polygon (Esc)" : "stand up (U)")) {
-    setOutlining(shell, !outlining_);
+  if (!ImGui::CollapsingHeader("Standing objects (U) and openings (O)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool standingUp = outlining_ && outlineShape_ != metrology::CutoutShape::kOpening;
+  const bool opening = outlining_ && outlineShape_ == metrology::CutoutShape::kOpening;
+  if (ImGui::SmallButton(standingUp ? "standing up: drag a rectangle or click a polygon (Esc)" : "stand up (U)")) {
+    setOutlining(shell, !standingUp);
   }
   rememberWidget("stand up");
   if (ImGui::IsItemHovered()) {
@@ -287,8 +347,17 @@ void EditMode::drawCutouts(app::Shell& shell) {
                       "or click a polygon around it (the first point again, or Enter, closes it);\n"
                       "the model stands it up on the floor instead of painting it on the wall");
   }
+  ImGui::SameLine();
+  if (ImGui::SmallButton(opening ? "opening: drag a rectangle or click its corners (Esc)" : "open (O)")) {
+    setOutlining(shell, !opening, metrology::CutoutShape::kOpening);
+  }
+  rememberWidget("open");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("a doorway or an opening in a side wall: drag a rectangle around it, or click its corners;\n"
+                      "the model opens the wall there, with a room behind it, instead of painting it on the wall");
+  }
   if (shot.cutouts.empty()) {
-    ImGui::TextDisabled("none: U, then drag a rectangle or click a polygon around an object");
+    ImGui::TextDisabled("none: U (an object) or O (a doorway), then drag a rectangle or click a polygon");
     return;
   }
   cutoutNameBuffers_.resize(shot.cutouts.size());
@@ -320,6 +389,16 @@ void EditMode::drawCutouts(app::Shell& shell) {
       ImGui::SetTooltip("a box on the floor (a cabinet, a bench, a radiator): its front, the side the photo\n"
                         "sees and its top, at their measured width, depth and height; off: a flat cut-out");
     }
+    ImGui::SameLine();
+    bool opening = cutout.shape == metrology::CutoutShape::kOpening;
+    if (ImGui::Checkbox("opening", &opening)) {
+      setCutoutShape(shell, i, opening ? metrology::CutoutShape::kOpening : metrology::CutoutShape::kFlat);
+    }
+    rememberWidget(("cutout " + std::to_string(i + 1) + " opening").c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("a doorway or an opening in a side wall: the model opens the wall there, with a room\n"
+                        "behind it that shows what the photo sees through it; off: an object stood up");
+    }
     ImGui::PopID();
   }
 }
@@ -331,7 +410,9 @@ void EditMode::addCutoutsTrace(app::TraceRow& row) const {
       ordered_json outline = ordered_json::array();
       for (const glm::dvec2& p : c.outlinePx) outline.push_back({p.x, p.y});
       ordered_json entry = {{"name", c.name}, {"outline_px", outline},
-                            {"shape", c.shape == metrology::CutoutShape::kBox ? "box" : "flat"}};
+                            {"shape", c.shape == metrology::CutoutShape::kBox       ? "box"
+                                      : c.shape == metrology::CutoutShape::kOpening ? "opening"
+                                                                                    : "flat"}};
       if (const auto box = c.shape == metrology::CutoutShape::kBox ? shownBoxPx(c.name) : std::nullopt) {
         ordered_json corners = ordered_json::array();
         for (const glm::dvec2& p : *box) corners.push_back({p.x, p.y});

@@ -4,7 +4,8 @@
 // undo and redo take it away and back; a rectangle running off the photo's bottom edge is
 // refused with the reason and changes nothing; a name typed into the list is kept; its
 // "box" stands it up as a box, undoably; the saved copy carries the cutout and `photowalk
-// build` stands the person up from it, as tall as she is. Validation on (PW_VALIDATION=1).
+// build` stands the person up from it, as tall as she is; O and a doorway's corners clicked
+// open the wall there. Validation on (PW_VALIDATION=1).
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -220,6 +221,50 @@ TEST_F(StandUp, APolygonClickedAroundAPersonStandsHerUp) {
   EXPECT_TRUE(outlining(45).at("polygon_px").empty()) << "Esc drops it";
   EXPECT_TRUE(outlining(45).at("active").get<bool>()) << "and the tool stays on";
   EXPECT_EQ(rows.at(45).raw.at("cutouts").size(), 1u);
+}
+
+// O and the doorway's four corners clicked (TUNE seed 0's doorway in the left wall, from the
+// scene's answers) open the wall there: a cutout of shape "opening", undoable; the saved
+// copy's model opens it as wide and as high as the doorway is.
+TEST_F(StandUp, ADoorwayClickedWithOOpensTheWall) {
+  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(dir_ / "seed_00000.json"));
+  std::vector<glm::dvec2> corners;
+  double widthM = 0, heightM = 0;
+  for (const nlohmann::json& o : truth.at("openings")) {
+    if (o.at("kind") != "opening" || o.at("wall") != "left_wall") continue;
+    for (const nlohmann::json& p : o.at("corners_px")) corners.emplace_back(p[0].get<double>(), p[1].get<double>());
+    widthM = std::abs(o["z_m"][0].get<double>() - o["z_m"][1].get<double>());
+    heightM = o["y_m"][1].get<double>() - o["y_m"][0].get<double>();
+  }
+  ASSERT_EQ(corners.size(), 4u) << "no doorway in the left wall in the scene's answers";
+  const auto first = edit("opening_layout", "2 quit\n");
+  ASSERT_GE(first.size(), 2u);
+  const Row& r = first.back();
+  Script s;
+  s.key(3, "O");
+  for (int i = 0; i < 4; ++i) s.click(5 + 3 * i, r.toWindow(corners[i]));
+  s.key(18, "ENTER");
+  s.at(20, "save-copy opened.json");
+  s.ctrlKey(22, "Z").at(25, "quit");
+  std::string output;
+  const auto rows = edit("opening", s.str(), &output);
+  ASSERT_GE(rows.size(), 25u);
+  const nlohmann::json cutouts = rows.at(20).raw.at("cutouts");
+  ASSERT_EQ(cutouts.size(), 1u) << cutouts.dump() << output;
+  EXPECT_EQ(cutouts[0].at("name"), "opening 1");
+  EXPECT_EQ(cutouts[0].at("shape"), "opening");
+  EXPECT_EQ(rows.at(24).raw.at("cutouts").size(), 0u) << "undone";
+  EXPECT_NE(output.find("opening 1 opens the left wall: "), std::string::npos) << output;
+
+  const CommandRun built = photowalk("build " + (dir_ / "opened.json").string() + " -o " + (dir_ / "opened.wrl").string());
+  ASSERT_EQ(built.exitCode, 0) << built.output;
+  std::ifstream model(dir_ / "opened.wrl");
+  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(text, m, std::regex("opened: opening 1 \\([^)]*\\), an opening ([0-9.]+) m wide and ([0-9.]+) m high in the left wall")))
+      << "no 'opened' line in the model";
+  EXPECT_NEAR(std::stod(m[1]), widthM, 0.05) << "true " << widthM;  // measured 0.95 (true 0.947)
+  EXPECT_NEAR(std::stod(m[2]), heightM, 0.02) << "true " << heightM;  // measured 2.03 (true 2.027)
 }
 
 }  // namespace

@@ -899,6 +899,20 @@ def boundary_shown(s, cam, name, p, offset_px=1.5):
     return not any(occluded(s["eye"], q, s["objects"]) for q in (on_wall, on_plane))
 
 
+def opening_corners_px(cam, s, o):
+    """An opening's corners in the photo: bottom and top at its larger z, top and bottom at
+    its smaller (null where one is behind the camera)."""
+    x = o["side"] * s["width"] / 2
+    (za, zb), (ya, yb) = sorted(o["z"]), o["y"]
+    out = []
+    for y, z in ((ya, zb), (yb, zb), (yb, za), (ya, za)):
+        u, v, depth = cam.project((x, y, z))
+        if depth <= 0.01:
+            return None
+        out.append([round(u, 3), round(v, 3)])
+    return out
+
+
 def answers(s):
     w, h = s["size"]
     cam = Camera(s["eye"], s["ypr"], s["size"], s["focal_px"], s["principal"])
@@ -968,8 +982,11 @@ def answers(s):
         "vanishing_point_frame": "camera frame x right, y up, z back (looking along -z); homogeneous pixels (u w, v w, w)",
         "materials": {"walls": s["walls_kind"], "floor": s["floor_kind"], "ceiling": s["ceiling_kind"],
                       "skirting": bool(s["skirting"]), "lamps": s["lamp_style"]},
-        "openings": [{"kind": o["kind"], "wall": "left_wall" if o["side"] < 0 else "right_wall",
-                      "z_m": [round(x, 4) for x in o["z"]], "y_m": [round(x, 4) for x in o["y"]]} for o in s["openings"]],
+        "openings": [dict({"kind": o["kind"], "wall": "left_wall" if o["side"] < 0 else "right_wall",
+                           "z_m": [round(x, 4) for x in o["z"]], "y_m": [round(x, 4) for x in o["y"]],
+                           "corners_px": opening_corners_px(cam, s, o)},
+                          **({"room_depth_m": round(o["depth"], 4)} if o["kind"] == "opening" else {}))
+                     for o in s["openings"]],
         "objects": objects,
     }
 
@@ -1130,6 +1147,64 @@ def read_mask_ids(path):
     return w, h, [mask_id(pix[3 * i], pix[3 * i + 1]) for i in range(w * h)]
 
 
+OPENING_MIN_AREA_PX = 400
+
+
+def convex_hull(points):
+    """The convex hull of 2D points, counter-clockwise (Andrew's monotone chain)."""
+    pts = sorted(set(points))
+    if len(pts) < 3:
+        return pts
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def polygon_area(poly):
+    """The area of a simple polygon (shoelace); 0 for fewer than three points."""
+    if len(poly) < 3:
+        return 0.0
+    return 0.5 * abs(sum(poly[k][0] * poly[k - 1][1] - poly[k - 1][0] * poly[k][1] for k in range(len(poly))))
+
+
+def opening_outlines(ans):
+    """A cutout of shape "opening" for each side opening (a room beyond, not a window) the
+    photo shows over OPENING_MIN_AREA_PX: the outline of the part of it inside the photo, as a
+    person clicks a doorway's corners (where the opening runs off the photo, along the
+    photo's edge)."""
+    w, h = ans["image_size"]
+    cam = Camera(ans["camera_position_m"], [ans["yaw_deg"], ans["pitch_deg"], ans["roll_deg"]], (w, h),
+                 ans["focal_px"], ans["principal_point"])
+    out = []
+    for i, o in enumerate(ans["openings"]):
+        if o["kind"] != "opening":
+            continue
+        x = ans["width_m"] / 2 * (-1 if o["wall"] == "left_wall" else 1)
+        (za, zb), (ya, yb) = sorted(o["z_m"]), o["y_m"]
+        n = 60
+        pts = []
+        for i_z in range(n + 1):
+            for i_y in range(n + 1):
+                u, v, depth = cam.project([x, ya + (yb - ya) * i_y / n, za + (zb - za) * i_z / n])
+                if depth > 0.05 and 0 <= u <= w - 1 and 0 <= v <= h - 1:
+                    pts.append((round(u, 2), round(v, 2)))
+        hull = convex_hull(pts)
+        if polygon_area(hull) < OPENING_MIN_AREA_PX:
+            continue
+        out.append({"name": "opening_%d" % i, "outline_px": [list(p) for p in hull], "shape": "opening"})
+    return out
+
+
 def write_standing(seed, outdir, kinds=STANDING_KINDS):
     """Writes seed_NNNNN_standing.json beside the seed's files (its .json and _mask.ppm):
     the shot with a cutout for each object of `kinds` the photo shows over 150 px with its
@@ -1140,7 +1215,8 @@ def write_standing(seed, outdir, kinds=STANDING_KINDS):
     base = os.path.join(outdir, "seed_%05d" % seed)
     with open(base + ".json") as f:
         ans = json.load(f)
-    w, h, ids = read_mask_ids(base + "_mask.ppm")
+    w, h = ans["image_size"]
+    ids = read_mask_ids(base + "_mask.ppm")[2] if set(kinds) - {"opening"} else []
     boxes = {}
     for i, v in enumerate(ids):
         if v >= OBJECT_ID0:
@@ -1165,6 +1241,8 @@ def write_standing(seed, outdir, kinds=STANDING_KINDS):
         if ob["kind"] in BOX_KINDS:
             cutout["shape"] = "box"
         cutouts.append(cutout)
+    if "opening" in kinds:
+        cutouts += opening_outlines(ans)
     standing = base + "_standing.json"
     if cutouts:
         shot = dict(ans)
