@@ -2,7 +2,8 @@
 // (the sample corridor upscaled to 4619 x 2598, corners and focal length scaled):
 //   measure + cut the five textures + assemble the scene (the work build does in
 //   memory), against reading the photo alone (the least any build must do);
-//   and writing the model (VRML97 + PNG textures) as a separate figure.
+//   and writing the model (VRML97 + PNG textures) as a separate figure; and the build
+//   with a doorway opened in a side wall (a room behind it, issue 25).
 // Target (issue 5): build under 1 s on 2 cores; with synthesis (issue 14) under 1.5 s,
 // against --photo-only (the model without synthesis) in the same run.
 // Usage: build_bench [RUNS]   (default 5)
@@ -52,7 +53,25 @@ int main(int argc, char** argv) {
   if (auto w = pw::modeling::writeShotFile(dir / "big.json", bigShot); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
   std::printf("photo: %dx%d (%.1f MP)\n", big.cols, big.rows, big.total() / 1e6);
 
-  std::vector<double> readMs, buildMs, photoOnlyMs, writeMs;
+  // The same with a doorway opened in the left wall (issue 25, modeling/side_room.h): 1 m
+  // wide and 2 m high, half way down, outlined by its corners as the photo shows them.
+  auto measured = pw::modeling::measureShotFile(dir / "big.json");
+  if (!measured) return std::fprintf(stderr, "%s\n", measured.message().c_str()), 1;
+  {
+    const pw::metrology::Measurement& m = measured->measurement;
+    const double x = -0.5 * m.size.widthM, z = -0.5 * m.size.lengthM;
+    pw::metrology::Cutout doorway{"doorway", {}, pw::metrology::CutoutShape::kOpening};
+    for (const glm::dvec3 p : {glm::dvec3(x, 0, z + 0.5), glm::dvec3(x, 0, z - 0.5), glm::dvec3(x, 2, z - 0.5), glm::dvec3(x, 2, z + 0.5)}) {
+      doorway.outlinePx.push_back(glm::dvec2(pw::metrology::projectWithMeasurement(m, p)));
+    }
+    pw::metrology::Shot opened = bigShot;
+    opened.cutouts = {doorway};
+    if (auto w = pw::modeling::writeShotFile(dir / "big_opened.json", opened); !w) {
+      return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
+    }
+  }
+
+  std::vector<double> readMs, buildMs, photoOnlyMs, writeMs, openedMs;
   for (int i = 0; i < runs; ++i) {
     auto t = Clock::now();
     cv::Mat photo = cv::imread((dir / "big.png").string());
@@ -71,6 +90,11 @@ int main(int argc, char** argv) {
     if (!open) return std::fprintf(stderr, "%s\n", open.message().c_str()), 1;
 
     t = Clock::now();
+    auto opened = pw::modeling::buildModel(pw::modeling::chainLayout({dir / "big_opened.json"}), {});
+    openedMs.push_back(msSince(t));
+    if (!opened) return std::fprintf(stderr, "%s\n", opened.message().c_str()), 1;
+
+    t = Clock::now();
     if (auto w = pw::engine::writeVrml(model->scene, dir / "big.wrl"); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;
     writeMs.push_back(msSince(t));
   }
@@ -80,6 +104,8 @@ int main(int argc, char** argv) {
               build / read);
   std::printf("the same, --photo-only (no synthesis) median %8.1f ms   (synthesis adds %.1f ms; target: build < 1500 ms)\n",
               median(photoOnlyMs), build - median(photoOnlyMs));
+  std::printf("the same with a doorway opened      median %8.1f ms   (the room adds %.1f ms)\n", median(openedMs),
+              median(openedMs) - build);
   std::printf("write VRML + PNG textures          median %8.1f ms\n", write);
   std::printf("build + write                      median %8.1f ms\n", build + write);
   return 0;

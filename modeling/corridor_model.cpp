@@ -98,14 +98,7 @@ Result<SurfaceTexture> cutTexture(metrology::PhotoPyramid& photo, const Measurem
   out.coveredFraction = plane->coverage;
   meanColor = glm::vec3(plane->meanColor[2], plane->meanColor[1], plane->meanColor[0]) / 255.0f;
   out.image = imageFromBgr(plane->image);
-  // Texture coordinates (0..1 over the rect, t = 0 at the bottom) to the photo's pixels:
-  // metric x = s W, y = (1 - t) H.
-  const cv::Matx33d photoFromTexCoord = photoFromMetric * cv::Matx33d(widthM, 0, 0, 0, -heightM, heightM, 0, 0, 1);
-  glm::mat3 columns;
-  for (int c = 0; c < 3; ++c) {
-    for (int row = 0; row < 3; ++row) columns[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
-  }
-  out.sourceFromTexCoord = columns;
+  out.sourceFromTexCoord = sourceFromTexCoord(photoFromMetric, widthM, heightM);
   return out;
 }
 
@@ -248,6 +241,17 @@ std::string fileSafe(const std::string& name) {
 }
 
 }  // namespace
+
+glm::mat3 sourceFromTexCoord(const cv::Matx33d& photoFromMetric, double widthM, double heightM) {
+  // Texture coordinates (0..1 over the rect, t = 0 at the bottom) to the photo's pixels:
+  // metric x = s W, y = (1 - t) H.
+  const cv::Matx33d photoFromTexCoord = photoFromMetric * cv::Matx33d(widthM, 0, 0, 0, -heightM, heightM, 0, 0, 1);
+  glm::mat3 columns;
+  for (int c = 0; c < 3; ++c) {
+    for (int row = 0; row < 3; ++row) columns[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
+  }
+  return columns;
+}
 
 engine::Image imageFromBgr(const cv::Mat& bgr) {
   cv::Mat rgba;

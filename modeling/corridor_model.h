@@ -91,6 +91,12 @@ struct CorridorModel {
 // An 8-bit BGR (OpenCV) image as an engine image: RGBA, opaque, rows top to bottom.
 engine::Image imageFromBgr(const cv::Mat& bgr);
 
+// A texture cut from the photo by rectify.h over a W x H metre rectangle whose metric
+// (x, y) (from its top-left corner, y down) reaches the photo's pinhole pixels through
+// `photoFromMetric`: its texture coordinates (s, t, 1), t = 0 at the bottom, to those
+// pixels (engine::Texture::sourceFromTexCoord).
+glm::mat3 sourceFromTexCoord(const cv::Matx33d& photoFromMetric, double widthM, double heightM);
+
 // Cuts the textures out of the photo (BGR, 8 bit) for the measured corridor.
 // `attached`: the corridor starts at another's wall, so nothing runs towards its camera.
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,

@@ -82,12 +82,7 @@ RoomPanel cutRoomPanel(metrology::PhotoPyramid& pyramid, const Measurement& m, c
   cv::dilate(seen, seen, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kSeenMarginTexels + 1, 2 * kSeenMarginTexels + 1)));
   image.setTo(mean, ~seen);
   out.image = imageFromBgr(image);
-  const cv::Matx33d photoFromTexCoord = photoFromMetric * cv::Matx33d(widthM, 0, 0, 0, -heightM, heightM, 0, 0, 1);
-  for (int c = 0; c < 3; ++c) {
-    for (int row = 0; row < 3; ++row) {
-      out.sourceFromTexCoord[c][row] = static_cast<float>(photoFromTexCoord(row, c) / photoFromTexCoord(2, 2));
-    }
-  }
+  out.sourceFromTexCoord = sourceFromTexCoord(photoFromMetric, widthM, heightM);
   return out;
 }
 
