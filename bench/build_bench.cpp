@@ -77,6 +77,13 @@ int main(int argc, char** argv) {
     cv::Mat photo = cv::imread((dir / "big.png").string());
     readMs.push_back(msSince(t));
 
+    {  // in its own scope: no other model held while it is built
+      t = Clock::now();
+      auto opened = pw::modeling::buildModel(pw::modeling::chainLayout({dir / "big_opened.json"}), {});
+      openedMs.push_back(msSince(t));
+      if (!opened) return std::fprintf(stderr, "%s\n", opened.message().c_str()), 1;
+    }
+
     t = Clock::now();
     auto model = pw::modeling::buildModel(pw::modeling::chainLayout({dir / "big.json"}), {});
     buildMs.push_back(msSince(t));
@@ -88,11 +95,6 @@ int main(int argc, char** argv) {
     auto open = pw::modeling::buildModel(pw::modeling::chainLayout({dir / "big.json"}), photoOnly);
     photoOnlyMs.push_back(msSince(t));
     if (!open) return std::fprintf(stderr, "%s\n", open.message().c_str()), 1;
-
-    t = Clock::now();
-    auto opened = pw::modeling::buildModel(pw::modeling::chainLayout({dir / "big_opened.json"}), {});
-    openedMs.push_back(msSince(t));
-    if (!opened) return std::fprintf(stderr, "%s\n", opened.message().c_str()), 1;
 
     t = Clock::now();
     if (auto w = pw::engine::writeVrml(model->scene, dir / "big.wrl"); !w) return std::fprintf(stderr, "%s\n", w.message().c_str()), 1;

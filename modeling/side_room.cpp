@@ -18,7 +18,7 @@ using metrology::Measurement;
 constexpr double kReachM = 10.0;      // the room runs at most this far along the corridor beyond the opening
 constexpr double kEndMarginM = 0.5;   // beyond what the photo sees through the opening
 constexpr double kMinPxPerM = 16;
-constexpr double kMaxTexturePixels = 1.0e6;
+constexpr double kMaxTexturePixels = 2.5e5;
 constexpr int kSeenMarginTexels = 2;
 
 // Where the segment from the photo's camera to p crosses the wall plane x = wallX, in
@@ -238,7 +238,7 @@ Result<std::vector<SideRoom>> openSideRooms(const cv::Mat& photo, const Measurem
     rooms.push_back(std::move(*room));
   }
   // Along the corridor (z), each opening's span; openings on one wall must not overlap,
-  // and each room reaches no further than its neighbours' openings.
+  // and each room reaches no further than half way to its neighbours' openings.
   const auto span = [&](const SideRoom& room) {
     const Panel wall = surfacePanel(room.wall, m.size, nearM);
     const double a = wall.point(room.opening.s0, 0).z, b = wall.point(room.opening.s1, 0).z;
@@ -255,8 +255,9 @@ Result<std::vector<SideRoom>> openSideRooms(const cv::Mat& photo, const Measurem
         return makeError("cutouts \"" + rooms[std::min(i, j)].name + "\" and \"" + rooms[std::max(i, j)].name +
                          "\": two openings overlap on the " + surfaceName(rooms[i].wall) + ": make them one");
       }
-      if (yb <= za) zMin = std::max(zMin, yb);
-      if (ya >= zb) zMax = std::min(zMax, ya);
+      // Half way to a neighbour's opening: the two rooms meet there and do not overlap.
+      if (yb <= za) zMin = std::max(zMin, 0.5 * (yb + za));
+      if (ya >= zb) zMax = std::min(zMax, 0.5 * (ya + zb));
     }
     buildRoom(pyramid, m, nearM, colours, zMin, zMax, rooms[i]);
   }

@@ -72,7 +72,7 @@ Result<SideRoom> placeOpening(const metrology::Measurement& measurement, const m
 
 // The rooms behind the openings `openings` (cutouts of shape kOpening) outline in the
 // measured corridor seen in `photo` (BGR, 8 bit), one per opening, in their order. Each
-// room reaches along the corridor no further than the next opening on its wall.
+// room reaches along the corridor no further than half way to the next opening on its wall.
 // `nearM`: how far towards the camera (z > 0) the corridor's walls run in the model.
 // Errors name the cutout and say what to do (an outline not on a side wall, an opening
 // narrower than kMinOpeningM, two openings overlapping on a wall).

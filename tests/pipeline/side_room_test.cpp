@@ -181,6 +181,29 @@ TEST(SideRooms, AnOutlineOffTheSideWallsOrOverlappingAnotherIsRefusedByName) {
   EXPECT_NE(twice.message().find("overlap"), std::string::npos) << twice.message();
 }
 
+// Two doorways in one wall: each room reaches half way to the other's doorway, so that
+// neither room's end stands inside the other (seen through one doorway, the other's
+// room would show its texture there).
+TEST(SideRooms, TwoRoomsInOneWallMeetHalfWay) {
+  const Doorway truth = trueDoorway();
+  const Doorway farther{truth.z0 - 2.0, truth.z0 - 1.2, truth.top};
+  const BuiltModel model =
+      built({doorwayOutline(measured().measurement, truth, "near"), doorwayOutline(measured().measurement, farther, "far")});
+  ASSERT_EQ(model.corridors.at(0).rooms.size(), 2u);
+  const auto endZ = [](const SideRoom& room, const std::string& label) {
+    for (const RoomPanel& panel : room.panels) {
+      if (panel.label == label) return panel.panel.origin.z;
+    }
+    ADD_FAILURE() << "no " << label;
+    return 0.0;
+  };
+  const SideRoom& nearRoom = model.corridors[0].rooms[0];
+  const SideRoom& farRoom = model.corridors[0].rooms[1];
+  const double middle = 0.5 * (farther.z1 + truth.z0);
+  EXPECT_GE(endZ(nearRoom, "far_end"), middle - 1e-9);
+  EXPECT_LE(endZ(farRoom, "near_end"), middle + 1e-9);
+}
+
 TEST(SideRooms, AShotFileKeepsAnOpening) {
   auto loaded = loadShot(kShot);
   ASSERT_TRUE(loaded.ok()) << loaded.message();
