@@ -96,10 +96,12 @@ struct ObjectMeasure {
 // outline a person drew around it, which need not be tight (GrabCut finds the object
 // inside it), down to where it stands on the floor. Flat: one upright cut-out facing the
 // photo's camera (a person, a plant); a box: a box standing on the floor, its sides along
-// the corridor's axes (a cabinet, a bench, a radiator). An opening is no object: a
+// the corridor's axes (a cabinet, a bench, a radiator). Hanging: a flat cut-out hanging
+// from the ceiling where the outline's top meets it (a lamp on a rod, a sign), drawn
+// up to where it hangs instead of down to a foot. An opening is no object: a
 // doorway or an opening into a room in a side wall, opened in the model with a room
 // behind it (modeling/side_room.h).
-enum class CutoutShape { kFlat, kBox, kOpening };
+enum class CutoutShape { kFlat, kBox, kOpening, kHanging };
 
 struct Cutout {
   std::string name;

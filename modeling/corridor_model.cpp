@@ -454,6 +454,12 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                       "%.2f m, z %.2f m, %.2f m from the photo's camera",
                       object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.depthM, object.heightM,
                       depth, object.footM.x, object.footM.z, object.distanceM);
+      } else if (object.shape == metrology::CutoutShape::kHanging) {
+        std::snprintf(line, sizeof line,
+                      "stood up: %s (%s_%s), a cut-out %.2f m wide and %.2f m high hanging from the ceiling above x %.2f m, "
+                      "z %.2f m, %.2f m from the photo's camera",
+                      object.name.c_str(), model.name.c_str(), label.c_str(), object.widthM, object.heightM,
+                      object.footM.x, object.footM.z, object.distanceM);
       } else {
         std::snprintf(line, sizeof line,
                       "stood up: %s (%s_%s), a cut-out %.2f m wide and %.2f m high on the floor at x %.2f m, z %.2f m, "

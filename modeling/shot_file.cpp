@@ -212,9 +212,12 @@ Status readCutouts(const json& fields, const std::string& where, std::vector<met
         cutout.shape = metrology::CutoutShape::kBox;
       } else if (shape == "opening") {
         cutout.shape = metrology::CutoutShape::kOpening;
+      } else if (shape == "hanging") {
+        cutout.shape = metrology::CutoutShape::kHanging;
       } else if (shape != "flat") {
-        return makeError(at + ": its shape is \"flat\" (a cut-out facing the camera), \"box\" (a box on the floor) or "
-                              "\"opening\" (a doorway in a side wall, with a room behind it)");
+        return makeError(at + ": its shape is \"flat\" (a cut-out facing the camera), \"box\" (a box on the floor), "
+                              "\"hanging\" (a cut-out hanging from the ceiling) or \"opening\" (a doorway in a side wall, "
+                              "with a room behind it)");
       }
     }
     for (const metrology::Cutout& earlier : cutouts) {
@@ -479,6 +482,7 @@ json shotJson(const fs::path& path, const metrology::Shot& shot, const json& oth
       json cutout = {{"name", c.name}, {"outline_px", outline}};
       if (c.shape == metrology::CutoutShape::kBox) cutout["shape"] = "box";
       if (c.shape == metrology::CutoutShape::kOpening) cutout["shape"] = "opening";
+      if (c.shape == metrology::CutoutShape::kHanging) cutout["shape"] = "hanging";
       cutouts.push_back(std::move(cutout));
     }
     doc["cutouts"] = cutouts;

@@ -186,10 +186,42 @@ Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const
   return Foot{footPx, *foot};
 }
 
+// A hanging object's top: where the outline's top row (a person draws it up to where
+// the object hangs; GrabCut may lose a thin rod), at the middle of the object's topmost
+// pixels, meets the ceiling; or the error saying why it does not hang from this
+// corridor's ceiling. `m` of the result is the point on the floor below it.
+Result<Foot> hangingPointOf(const Measurement& m, const metrology::Cutout& cutout, const cv::Mat& mask, const cv::Rect& box) {
+  const std::string who = "cutout \"" + cutout.name + "\"";
+  double outlineTop = 1e300;
+  for (const glm::dvec2& p : cutout.outlinePx) outlineTop = std::min(outlineTop, p.y);
+  const int band = std::max(1, box.height / 50);
+  double sumU = 0;
+  int count = 0;
+  for (int v = box.y; v < box.y + band; ++v) {
+    for (int u = box.x; u < box.x + box.width; ++u) {
+      if (mask.at<uint8_t>(v, u)) sumU += u, ++count;
+    }
+  }
+  const glm::dvec2 topPx(sumU / std::max(1, count), std::max(outlineTop, -0.5));
+  const std::optional<glm::dvec3> top = onPlane(m, topPx, glm::dvec3(0, m.size.heightM, 0), glm::dvec3(0, 1, 0));
+  const std::string where = "(" + std::to_string(std::lround(topPx.x)) + ", " + std::to_string(std::lround(topPx.y)) + ")";
+  if (!top || glm::length(*top - m.pose.positionM) > 1e4) {
+    return makeError(who + ": its top " + where +
+                     " is on or below the horizon: draw the outline up to where the object hangs from the ceiling");
+  }
+  constexpr double kSlackM = 0.05;
+  if (std::abs(top->x) > 0.5 * m.size.widthM + kSlackM || top->z < -m.size.lengthM - kSlackM) {
+    return makeError(who + ": its top " + where + " meets the ceiling beyond the corridor's (at x " +
+                     std::to_string(top->x).substr(0, 5) + " m, z " + std::to_string(top->z).substr(0, 6) +
+                     " m): draw the outline up to where the object hangs from this corridor's ceiling");
+  }
+  return Foot{topPx, {top->x, 0.0, top->z}};
+}
+
 // A flat cut-out: the upright rectangle through the foot facing the photo's camera, as far
-// as the object's pixels reach on it.
+// as the object's pixels reach on it, from the floor up (hanging: from the ceiling down).
 Result<StandingObject> standUpFlat(const Measurement& m, const std::string& who, const cv::Rect& box, const Foot& foot,
-                                   StandingObject object) {
+                                   bool hanging, StandingObject object) {
   const metrology::Dimensions& size = m.size;
   const glm::dvec3 eye = m.pose.positionM;
   object.footM = {std::clamp(foot.m.x, -0.5 * size.widthM, 0.5 * size.widthM), 0.0, std::max(foot.m.z, -size.lengthM)};
@@ -201,20 +233,25 @@ Result<StandingObject> standUpFlat(const Measurement& m, const std::string& who,
   face.normal = toEye / object.distanceM;
   const glm::dvec3 up(0, 1, 0);
   const glm::dvec3 right = glm::normalize(glm::cross(-face.normal, up));
-  // The rectangle: as far as the object's pixels reach on the plane, from the floor up.
-  double s0 = 1e300, s1 = -1e300, top = 0;
+  // The rectangle: as far as the object's pixels reach on the plane, from the floor up
+  // (hanging: from the ceiling down).
+  double s0 = 1e300, s1 = -1e300, top = 0, bottom = size.heightM;
   for (const glm::dvec2 corner : {glm::dvec2(box.x - 0.5, box.y - 0.5), glm::dvec2(box.x + box.width - 0.5, box.y - 0.5),
                                   glm::dvec2(box.x - 0.5, box.y + box.height - 0.5),
                                   glm::dvec2(box.x + box.width - 0.5, box.y + box.height - 0.5)}) {
     const std::optional<glm::dvec3> p = onPlane(m, corner, object.footM, face.normal);
     if (!p) return makeError(who + ": the photo's camera sees it edge on");
     const double s = glm::dot(*p - object.footM, right);
-    s0 = std::min(s0, s), s1 = std::max(s1, s), top = std::max(top, p->y);
+    s0 = std::min(s0, s), s1 = std::max(s1, s), top = std::max(top, p->y), bottom = std::min(bottom, p->y);
   }
+  const double base = hanging ? std::max(0.0, bottom) : 0.0;
   object.widthM = s1 - s0;
-  object.heightM = top;
-  if (!(object.widthM > 1e-3 && object.heightM > 1e-3)) return makeError(who + ": it has no height above the floor");
-  const glm::dvec3 bottomLeft = object.footM + s0 * right, bottomRight = object.footM + s1 * right;
+  object.heightM = hanging ? size.heightM - base : top;
+  if (!(object.widthM > 1e-3 && object.heightM > 1e-3)) {
+    return makeError(who + (hanging ? ": it has no height below the ceiling" : ": it has no height above the floor"));
+  }
+  const glm::dvec3 lift(0, base, 0);
+  const glm::dvec3 bottomLeft = object.footM + s0 * right + lift, bottomRight = object.footM + s1 * right + lift;
   face.cornersM = {bottomLeft, bottomRight, bottomRight + object.heightM * up, bottomLeft + object.heightM * up};
   // A rectangle reaching through a side wall would be hidden there by the wall (filled
   // behind it): it is brought nearer along the photo's rays, scaled about the eye, until
@@ -476,17 +513,22 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   const std::string who = "cutout \"" + cutout.name + "\"";
   if (object.maskPixels == 0) return makeError(who + ": its outline holds no pixel of the photo");
   const cv::Rect box = cv::boundingRect(mask);
-  double outlineBottom = -1;
-  for (const glm::dvec2& p : cutout.outlinePx) outlineBottom = std::max(outlineBottom, p.y);
-  if (box.y + box.height >= photo.rows || outlineBottom >= photo.rows - 1) {
+  const bool hanging = cutout.shape == metrology::CutoutShape::kHanging;
+  double outlineBottom = -1, outlineTop = 1e300;
+  for (const glm::dvec2& p : cutout.outlinePx) outlineBottom = std::max(outlineBottom, p.y), outlineTop = std::min(outlineTop, p.y);
+  if (hanging && (box.y <= 0 || outlineTop <= 0)) {
+    return makeError(who + ": it runs off the photo's top edge, so where it hangs from the ceiling is not in the photo "
+                           "(remove the cutout, or outline only objects whose top shows)");
+  }
+  if (!hanging && (box.y + box.height >= photo.rows || outlineBottom >= photo.rows - 1)) {
     return makeError(who + ": it runs off the photo's bottom edge, so where it stands on the floor is not in the photo "
                            "(remove the cutout, or outline only objects whose foot shows)");
   }
-  const Result<Foot> foot = footOf(m, cutout, mask, box);
+  const Result<Foot> foot = hanging ? hangingPointOf(m, cutout, mask, box) : footOf(m, cutout, mask, box);
   if (!foot) return foot.error();
   // (A box's foot is checked too: its lowest pixel stands on this corridor's floor.)
   auto stood = cutout.shape == metrology::CutoutShape::kBox ? standUpBox(m, who, mask, box, std::move(object))
-                                                             : standUpFlat(m, who, box, *foot, std::move(object));
+                                                             : standUpFlat(m, who, box, *foot, hanging, std::move(object));
   if (!stood) return stood;
   // The faces the photo's camera sees carry the photo; the others the object's colour;
   // all of them the object's outline as alpha.
@@ -497,7 +539,7 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   for (StandingFace& face : stood->faces) {
     face.colour = colour;
     const glm::dvec3 middle = 0.25 * (face.cornersM[0] + face.cornersM[1] + face.cornersM[2] + face.cornersM[3]);
-    const bool seen = stood->shape == metrology::CutoutShape::kFlat || glm::dot(m.pose.positionM - middle, face.normal) > 1e-6;
+    const bool seen = stood->shape != metrology::CutoutShape::kBox || glm::dot(m.pose.positionM - middle, face.normal) > 1e-6;
     textureFace(photo, m, halo, seen, face);
   }
   return stood;

@@ -227,11 +227,16 @@ void EditMode::setCutoutShape(app::Shell& shell, size_t index, metrology::Cutout
   if (shape == metrology::CutoutShape::kBox) {
     std::snprintf(said, sizeof said, "%s stands as a box: %.2f m wide, %.2f m deep, %.2f m high, %.1f m from the camera",
                   cutout.name.c_str(), object->widthM, object->depthM, object->heightM, object->distanceM);
+  } else if (shape == metrology::CutoutShape::kHanging) {
+    std::snprintf(said, sizeof said, "%s hangs from the ceiling: %.2f m high, %.2f m wide, %.1f m from the camera",
+                  cutout.name.c_str(), object->heightM, object->widthM, object->distanceM);
   } else {
     std::snprintf(said, sizeof said, "%s stands as a flat cut-out: %.2f m high, %.2f m wide, %.1f m from the camera",
                   cutout.name.c_str(), object->heightM, object->widthM, object->distanceM);
   }
-  applyEdit(shell, after, (shape == metrology::CutoutShape::kBox ? "box " : "flat ") + cutout.name);
+  applyEdit(shell, after,
+            (shape == metrology::CutoutShape::kBox ? "box " : shape == metrology::CutoutShape::kHanging ? "hang " : "flat ") +
+                cutout.name);
   shell.showMessage(said);
 }
 
@@ -390,6 +395,16 @@ void EditMode::drawCutouts(app::Shell& shell) {
                         "sees and its top, at their measured width, depth and height; off: a flat cut-out");
     }
     ImGui::SameLine();
+    bool hanging = cutout.shape == metrology::CutoutShape::kHanging;
+    if (ImGui::Checkbox("hanging", &hanging)) {
+      setCutoutShape(shell, i, hanging ? metrology::CutoutShape::kHanging : metrology::CutoutShape::kFlat);
+    }
+    rememberWidget(("cutout " + std::to_string(i + 1) + " hanging").c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("hanging from the ceiling (a lamp on a rod, a sign): a flat cut-out whose top is where the\n"
+                        "outline's top meets the ceiling; draw the outline up to where it hangs");
+    }
+    ImGui::SameLine();
     bool opening = cutout.shape == metrology::CutoutShape::kOpening;
     if (ImGui::Checkbox("opening", &opening)) {
       setCutoutShape(shell, i, opening ? metrology::CutoutShape::kOpening : metrology::CutoutShape::kFlat);
@@ -412,6 +427,7 @@ void EditMode::addCutoutsTrace(app::TraceRow& row) const {
       ordered_json entry = {{"name", c.name}, {"outline_px", outline},
                             {"shape", c.shape == metrology::CutoutShape::kBox       ? "box"
                                       : c.shape == metrology::CutoutShape::kOpening ? "opening"
+                                      : c.shape == metrology::CutoutShape::kHanging ? "hanging"
                                                                                     : "flat"}};
       if (const auto box = c.shape == metrology::CutoutShape::kBox ? shownBoxPx(c.name) : std::nullopt) {
         ordered_json corners = ordered_json::array();

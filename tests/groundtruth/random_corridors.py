@@ -1122,6 +1122,9 @@ def make_views(seed, outdir, threads=2):
 STANDING_KINDS = {"person", "plant", "bin"}
 # Kinds stood up as boxes when asked for (standing_views.py --kinds ...,cabinet).
 BOX_KINDS = {"cabinet"}
+# Kinds hung from the ceiling when asked for (--kinds ...,lamp,sign): those on the ceiling
+# (a lamp on a rod, a sign; a sign on a wall is left painted).
+HANGING_KINDS = {"lamp", "sign"}
 STANDING_MIN_PIXELS = 150
 STANDING_MARGIN_PX = 4
 
@@ -1226,7 +1229,15 @@ def write_standing(seed, outdir, kinds=STANDING_KINDS):
     cutouts = []
     for ob in ans["objects"]:
         b = boxes.get(ob["mask_id"])
-        if ob["kind"] not in kinds or not b or b[4] < STANDING_MIN_PIXELS or b[3] + STANDING_MARGIN_PX >= h - 1:
+        if ob["on"] == "ceiling":  # a lamp on a rod, a sign: hanging, its top (where it hangs) in view
+            if ob["kind"] in kinds and b and b[4] >= STANDING_MIN_PIXELS and b[1] - STANDING_MARGIN_PX > 0:
+                m = STANDING_MARGIN_PX
+                x0, y0, x1, y1 = max(0, b[0] - m), b[1] - m, min(w - 1, b[2] + m), min(h - 1, b[3] + m)
+                cutouts.append({"name": "%s_%d" % (ob["kind"], ob["id"]), "shape": "hanging",
+                                "outline_px": [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]})
+            continue
+        if ob["kind"] not in kinds or ob["kind"] in HANGING_KINDS or not b or b[4] < STANDING_MIN_PIXELS or \
+                b[3] + STANDING_MARGIN_PX >= h - 1:
             continue
         kp = ob["keypoints_px"]
         foot = kp.get("feet") or kp.get("base") or max((p for k, p in kp.items() if "bottom" in k), key=lambda p: p[1])
