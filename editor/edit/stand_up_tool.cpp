@@ -45,6 +45,24 @@ const char* const kOutliningHelp =
 const char* const kOpeningHelp =
     "open: drag a rectangle around a doorway or an opening in a side wall, or click its corners; Esc: stop";
 
+// The shapes a cutout's line in the list can be given besides a flat cut-out.
+struct ShapeChoice {
+  metrology::CutoutShape shape;
+  const char* label;  // the checkbox's, and its widget's name after "cutout N "
+  const char* tooltip;
+};
+const ShapeChoice kShapeChoices[] = {
+    {metrology::CutoutShape::kBox, "box",
+     "a box on the floor (a cabinet, a bench, a radiator): its front, the side the photo\n"
+     "sees and its top, at their measured width, depth and height; off: a flat cut-out"},
+    {metrology::CutoutShape::kHanging, "hanging",
+     "hanging from the ceiling (a lamp on a rod, a sign): a flat cut-out whose top is where the\n"
+     "outline's top meets the ceiling; draw the outline up to where it hangs; off: standing"},
+    {metrology::CutoutShape::kOpening, "opening",
+     "a doorway or an opening in a side wall: the model opens the wall there, with a room\n"
+     "behind it that shows what the photo sees through it; off: an object stood up"},
+};
+
 ImVec2 im(const glm::dvec2& p) { return {float(p.x), float(p.y)}; }
 
 // "object N" ("opening N") with the first N no cutout is called.
@@ -386,33 +404,13 @@ void EditMode::drawCutouts(app::Shell& shell) {
         applyEdit(shell, after, "name " + *typed);
       }
     }
-    ImGui::SameLine();
-    bool box = cutout.shape == metrology::CutoutShape::kBox;
-    if (ImGui::Checkbox("box", &box)) setCutoutShape(shell, i, box ? metrology::CutoutShape::kBox : metrology::CutoutShape::kFlat);
-    rememberWidget(("cutout " + std::to_string(i + 1) + " box").c_str());
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("a box on the floor (a cabinet, a bench, a radiator): its front, the side the photo\n"
-                        "sees and its top, at their measured width, depth and height; off: a flat cut-out");
-    }
-    ImGui::SameLine();
-    bool hanging = cutout.shape == metrology::CutoutShape::kHanging;
-    if (ImGui::Checkbox("hanging", &hanging)) {
-      setCutoutShape(shell, i, hanging ? metrology::CutoutShape::kHanging : metrology::CutoutShape::kFlat);
-    }
-    rememberWidget(("cutout " + std::to_string(i + 1) + " hanging").c_str());
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("hanging from the ceiling (a lamp on a rod, a sign): a flat cut-out whose top is where the\n"
-                        "outline's top meets the ceiling; draw the outline up to where it hangs");
-    }
-    ImGui::SameLine();
-    bool opening = cutout.shape == metrology::CutoutShape::kOpening;
-    if (ImGui::Checkbox("opening", &opening)) {
-      setCutoutShape(shell, i, opening ? metrology::CutoutShape::kOpening : metrology::CutoutShape::kFlat);
-    }
-    rememberWidget(("cutout " + std::to_string(i + 1) + " opening").c_str());
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("a doorway or an opening in a side wall: the model opens the wall there, with a room\n"
-                        "behind it that shows what the photo sees through it; off: an object stood up");
+    // Its shape: each box ticked makes it that shape, unticked a flat cut-out again.
+    for (const ShapeChoice& choice : kShapeChoices) {
+      ImGui::SameLine();
+      bool on = cutout.shape == choice.shape;
+      if (ImGui::Checkbox(choice.label, &on)) setCutoutShape(shell, i, on ? choice.shape : metrology::CutoutShape::kFlat);
+      rememberWidget(("cutout " + std::to_string(i + 1) + " " + choice.label).c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choice.tooltip);
     }
     ImGui::PopID();
   }
