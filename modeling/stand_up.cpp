@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include <opencv2/imgproc.hpp>
@@ -186,6 +187,9 @@ Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const
   return Foot{footPx, *foot};
 }
 
+constexpr double kHangingSlackPx = 4;
+constexpr double kHangingPlaceShare = 0.1;
+
 // A hanging object's top: where the outline's top row (a person draws it up to where
 // the object hangs; GrabCut may lose a thin rod), at the middle of the object's topmost
 // pixels, meets the ceiling; or the error saying why it does not hang from this
@@ -214,6 +218,21 @@ Result<Foot> hangingPointOf(const Measurement& m, const metrology::Cutout& cutou
     return makeError(who + ": its top " + where + " meets the ceiling beyond the corridor's (at x " +
                      std::to_string(top->x).substr(0, 5) + " m, z " + std::to_string(top->z).substr(0, 6) +
                      " m): draw the outline up to where the object hangs from this corridor's ceiling");
+  }
+  // Where the ceiling is seen nearly edge on (far down a low corridor), a few pixels of the
+  // top row are metres along it: the place moved by kHangingSlackPx of the row (a person's
+  // outline is that loose) over kHangingPlaceShare of its distance is not in the photo.
+  const glm::dvec2 eyeXZ(m.pose.positionM.x, m.pose.positionM.z);
+  const double distance = glm::length(glm::dvec2(top->x, top->z) - eyeXZ);
+  const std::optional<glm::dvec3> lower =
+      onPlane(m, topPx + glm::dvec2(0, kHangingSlackPx), glm::dvec3(0, m.size.heightM, 0), glm::dvec3(0, 1, 0));
+  const double moved = lower ? glm::length(glm::dvec2(lower->x - top->x, lower->z - top->z)) : 1e300;
+  if (moved > kHangingPlaceShare * distance) {
+    char why[200];
+    std::snprintf(why, sizeof why, ": where it hangs is not in the photo (%.0f px of its top move it %.1f m of %.1f m): "
+                  "the ceiling is seen too nearly edge on there; leave it painted",
+                  kHangingSlackPx, std::min(moved, 1e4), distance);
+    return makeError(who + why);
   }
   return Foot{topPx, {top->x, 0.0, top->z}};
 }
