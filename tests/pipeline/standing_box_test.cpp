@@ -270,5 +270,48 @@ TEST(StandingBoxes, WhatTheBoxLeavesOutOfItsObjectStaysPainted) {
   EXPECT_GT(filled, 0.9 * inside) << "the cabinet's pixels inside its box are filled";
 }
 
+// A hanging sign in a long, low corridor (the ceiling 0.5 m above the eye): near the
+// camera its top row places it; 30 m down, where 4 px of that row move it metres, it is
+// refused by name rather than hung metres off.
+TEST(HangingObjects, OneFarDownALowCorridorIsRefusedByName) {
+  SyntheticCorridor c;
+  c.widthM = 2.0, c.heightM = 2.2, c.lengthM = 40;
+  c.cameraZM = 2.0, c.cameraHeightM = 1.7;
+  c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
+  const Cabinet nearSign{{-0.4, 1.7, -4.0}, {0.4, 2.2, -3.97}}, farSign{{-0.4, 1.7, -30.0}, {0.4, 2.2, -29.97}};
+  cv::Mat photo(c.imageHeight, c.imageWidth, CV_8UC3);
+  for (int v = 0; v < c.imageHeight; ++v) {
+    for (int u = 0; u < c.imageWidth; ++u) {
+      const glm::dvec3 d = c.ray({u, v});
+      const metrology::testing::Hit wall = metrology::testing::castRay(c, c.eyeM(), d);
+      cv::Vec3b colour(static_cast<uint8_t>(150 + 15 * std::max(0, wall.plane)), 170, 180);
+      for (const Cabinet* sign : {&nearSign, &farSign}) {
+        if (hitBox(*sign, c.eyeM(), d).first > 0) colour = cv::Vec3b(40, 60, 200);
+      }
+      photo.at<cv::Vec3b>(v, u) = colour;
+    }
+  }
+  auto m = metrology::measureCorridor(c.shot());
+  ASSERT_TRUE(m.ok()) << m.message();
+  const auto outline = [&](const Cabinet& sign, const std::string& name) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 p(k & 1 ? sign.hi.x : sign.lo.x, k & 2 ? sign.hi.y : sign.lo.y, k & 4 ? sign.hi.z : sign.lo.z);
+      const glm::dvec2 px(metrology::projectWithMeasurement(*m, p));
+      lo = glm::min(lo, px), hi = glm::max(hi, px);
+    }
+    lo -= glm::dvec2(4.0), hi += glm::dvec2(4.0);
+    return metrology::Cutout{name, {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, metrology::CutoutShape::kHanging};
+  };
+  auto hung = standUpObjects(photo, *m, {outline(nearSign, "near sign")});
+  ASSERT_TRUE(hung.ok()) << hung.message();
+  // Measured: z -3.53 (true -3.985): the outline's top 4 px above the sign's, 0.12 m a pixel here.
+  EXPECT_NEAR(hung->objects.at(0).footM.z, -3.985, 0.6);
+  auto refused = standUpObjects(photo, *m, {outline(farSign, "far sign")});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("cutout \"far sign\": where it hangs is not in the photo"), std::string::npos)
+      << refused.message();
+}
+
 }  // namespace
 }  // namespace pw::modeling
