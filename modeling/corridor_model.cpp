@@ -304,7 +304,7 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
   for (const metrology::Cutout& cutout : cutouts) {
     (cutout.shape == metrology::CutoutShape::kOpening ? openings : objects).push_back(cutout);
   }
-  if (objects.empty() && openings.empty()) return makeCorridorModel(name, photo, measurement, attached, options);
+  if (cutouts.empty()) return makeCorridorModel(name, photo, measurement, attached, options);
   Result<StoodUp> stood = StoodUp{{}, photo};
   if (!objects.empty()) stood = standUpObjects(photo, measurement, objects, options.cutOutCache);
   if (!stood) return makeError(name + ": " + stood.message());
@@ -313,13 +313,9 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
   model->standing = std::move(stood->objects);
   if (openings.empty()) return model;
   const auto colourOf = [&](Surface s) { return model->meanColor[static_cast<int>(s)]; };
-  RoomColours colours;
-  colours.wall = 0.5f * (colourOf(Surface::kLeftWall) + colourOf(Surface::kRightWall));
-  colours.floor = colourOf(Surface::kFloor);
-  colours.ceiling = colourOf(Surface::kCeiling);
+  const RoomColours colours{colourOf(Surface::kLeftWall), colourOf(Surface::kRightWall), colourOf(Surface::kFloor)};
   auto rooms = openSideRooms(photo, measurement, openings, model->untexturedNearM, colours);
   if (!rooms) return makeError(name + ": " + rooms.message());
-  for (SideRoom& room : *rooms) room.panels.back().colour = colourOf(room.wall);  // the wall's back
   model->rooms = std::move(*rooms);
   return model;
 }
@@ -364,6 +360,21 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       scene.shapes.push_back({std::make_shared<engine::Mesh>(std::move(mesh)), std::move(appearance), transform,
                               model.name + "_" + label});
     };
+    // A texture cut from the photo (clamped: a repeat would bleed the opposite edge into
+    // the seams between planes); `source`: how the photo saw it, where it did.
+    const auto photoAppearance = [&](const engine::Image& image, const std::string& url, const std::optional<glm::mat3>& source,
+                              const engine::Image* detail = nullptr) {
+      auto texture = std::make_shared<engine::Texture>();
+      texture->image = std::make_shared<engine::Image>(image);
+      texture->url = url;
+      texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
+      if (source) texture->sourceFromTexCoord = *source;
+      if (detail && !detail->empty()) texture->detail = std::make_shared<engine::Image>(*detail);
+      auto appearance = std::make_shared<engine::Appearance>();
+      appearance->texture = texture;
+      if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
+      return appearance;
+    };
     const auto untextured = [&](const glm::vec3& color) {
       auto appearance = std::make_shared<engine::Appearance>();
       if (options.lit) appearance->material = litMaterial(color);
@@ -377,17 +388,9 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       textured.textureRect = tex.rect;
       textured.openings = openingsOf(surface);
       textured.maxCellM = cellM;
-      auto texture = std::make_shared<engine::Texture>();
-      texture->image = std::make_shared<engine::Image>(tex.image);
-      texture->url = model.name + "_" + surfaceName(surface) + ".png";
-      // Clamp: a repeat would bleed the opposite edge into the seams between planes.
-      texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
-      texture->sourceFromTexCoord = tex.sourceFromTexCoord;
-      if (!tex.detail.empty()) texture->detail = std::make_shared<engine::Image>(tex.detail);
-      auto appearance = std::make_shared<engine::Appearance>();
-      appearance->texture = texture;
-      if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
-      addShape(panelMesh(textured), appearance, surfaceName(surface));
+      addShape(panelMesh(textured),
+               photoAppearance(tex.image, model.name + "_" + surfaceName(surface) + ".png", tex.sourceFromTexCoord, &tex.detail),
+               surfaceName(surface));
 
       if (const auto& extension = model.extensions[s]) {
         Panel strip = surfacePanel(surface, model.box, model.untexturedNearM);
@@ -395,14 +398,9 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
         strip.textureRect = extension->rect;
         strip.openings = textured.openings;
         strip.maxCellM = cellM;
-        auto stripTexture = std::make_shared<engine::Texture>();
-        stripTexture->image = std::make_shared<engine::Image>(extension->image);
-        stripTexture->url = model.name + "_" + surfaceName(surface) + "_near.png";
-        stripTexture->wrapS = stripTexture->wrapT = engine::TextureWrap::kClamp;
-        auto stripAppearance = std::make_shared<engine::Appearance>();
-        stripAppearance->texture = stripTexture;
-        if (options.lit) stripAppearance->material = litMaterial(glm::vec3(1.0f));
-        addShape(panelMesh(strip), stripAppearance, std::string(surfaceName(surface)) + "_near");
+        addShape(panelMesh(strip),
+                 photoAppearance(extension->image, model.name + "_" + surfaceName(surface) + "_near.png", std::nullopt),
+                 std::string(surfaceName(surface)) + "_near");
       } else if (model.untexturedNearM > model.photoNearM) {
         Panel strip = surfacePanel(surface, model.box, model.untexturedNearM);
         strip.extent = stripBeyond(strip.extent, textured.extent);
@@ -431,15 +429,10 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
         mesh.indices = {0, 1, 2, 0, 2, 3};
         mesh.solid = false;
         mesh.texCoords = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
-        auto texture = std::make_shared<engine::Texture>();
-        texture->image = std::make_shared<engine::Image>(face.image);
-        texture->url = model.name + "_" + faceLabel + ".png";
-        texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
-        if (face.photo) texture->sourceFromTexCoord = face.sourceFromTexCoord;
-        auto appearance = std::make_shared<engine::Appearance>();
-        appearance->texture = texture;
-        if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
-        addShape(std::move(mesh), appearance, faceLabel);
+        addShape(std::move(mesh),
+                 photoAppearance(face.image, model.name + "_" + faceLabel + ".png",
+                                 face.photo ? std::optional(face.sourceFromTexCoord) : std::nullopt),
+                 faceLabel);
       }
       char line[480];
       if (object.shape == metrology::CutoutShape::kBox) {
@@ -482,15 +475,9 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
                    label + "_" + part.label);
           continue;
         }
-        auto texture = std::make_shared<engine::Texture>();
-        texture->image = std::make_shared<engine::Image>(part.image);
-        texture->url = model.name + "_" + label + "_" + part.label + ".png";
-        texture->wrapS = texture->wrapT = engine::TextureWrap::kClamp;
-        texture->sourceFromTexCoord = part.sourceFromTexCoord;
-        auto appearance = std::make_shared<engine::Appearance>();
-        appearance->texture = texture;
-        if (options.lit) appearance->material = litMaterial(glm::vec3(1.0f));
-        addShape(panelMesh(panel), appearance, label + "_" + part.label);
+        addShape(panelMesh(panel),
+                 photoAppearance(part.image, model.name + "_" + label + "_" + part.label + ".png", part.sourceFromTexCoord),
+                 label + "_" + part.label);
       }
       char line[400];
       const Rect& o = room.opening;

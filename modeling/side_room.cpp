@@ -197,7 +197,8 @@ void buildRoom(metrology::PhotoPyramid& pyramid, const Measurement& m, double ne
   // What the photo does not see of the room's walls and ceiling: the mean of what it
   // shows through the opening (a room glowing white through a doorway is a white room);
   // of its floor, the corridor's floor (a floor often runs on).
-  const glm::vec3 through = meanThrough(pyramid.photo(), m, *wall, r).value_or(colours.wall);
+  const glm::vec3 wallColour = room.wall == Surface::kLeftWall ? colours.leftWall : colours.rightWall;
+  const glm::vec3 through = meanThrough(pyramid.photo(), m, *wall, r).value_or(wallColour);
   // Each facing into the room (panel.h: the front faces cross(sAxis, tAxis)).
   if (side < 0) {
     add("back", {backX, 0, 0}, {0, 0, -1}, {0, 1, 0}, {-z1, 0, -z0, height}, through);
@@ -222,7 +223,7 @@ void buildRoom(metrology::PhotoPyramid& pyramid, const Measurement& m, double ne
     hole.s0 = std::min(hole.s0, sBack), hole.s1 = std::max(hole.s1, sBack);
   }
   back.panel.openings = {hole};
-  back.colour = colours.wall;
+  back.colour = wallColour;
 }
 
 }  // namespace

@@ -60,9 +60,9 @@ inline constexpr double kFloorSnapM = 0.15;
 inline constexpr double kMinOpeningM = 0.2;
 
 // What the room's surfaces the photo does not see take (RGB 0-1): the corridor's walls',
-// floor's and ceiling's mean colours.
+// floor's and ceiling's mean colours (the wall's back around the opening: its wall's).
 struct RoomColours {
-  glm::vec3 wall{0.5f}, floor{0.5f}, ceiling{0.5f};
+  glm::vec3 leftWall{0.5f}, rightWall{0.5f}, floor{0.5f};
 };
 
 // The opening `cutout` outlines: its wall and its rectangle on it (no room yet: `panels`

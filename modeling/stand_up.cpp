@@ -157,20 +157,27 @@ struct Foot {
   glm::dvec3 m;
 };
 
+// The middle column of the mask's pixels in the band of rows [v0, v1) (a fiftieth of the
+// object's height at its bottom or its top).
+double middleColumn(const cv::Mat& mask, const cv::Rect& box, int v0, int v1) {
+  double sumU = 0;
+  int count = 0;
+  for (int v = v0; v < v1; ++v) {
+    for (int u = box.x; u < box.x + box.width; ++u) {
+      if (mask.at<uint8_t>(v, u)) sumU += u, ++count;
+    }
+  }
+  return sumU / std::max(1, count);
+}
+
+int bandRows(const cv::Rect& box) { return std::max(1, box.height / 50); }
+
 Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const cv::Mat& mask, const cv::Rect& box) {
   const std::string who = "cutout \"" + cutout.name + "\"";
   // The object's lowest row, at the middle of its pixels there (the bottom edge of that
   // row: where the object meets the floor).
   const int footRow = box.y + box.height - 1;
-  const int band = std::max(1, box.height / 50);
-  double sumU = 0;
-  int count = 0;
-  for (int v = footRow - band + 1; v <= footRow; ++v) {
-    for (int u = box.x; u < box.x + box.width; ++u) {
-      if (mask.at<uint8_t>(v, u)) sumU += u, ++count;
-    }
-  }
-  const glm::dvec2 footPx(sumU / std::max(1, count), footRow + 0.5);
+  const glm::dvec2 footPx(middleColumn(mask, box, footRow - bandRows(box) + 1, footRow + 1), footRow + 0.5);
   const std::optional<glm::dvec3> foot = onPlane(m, footPx, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
   if (!foot || glm::length(*foot - m.pose.positionM) > 1e4) {
     return makeError(who + ": its lowest pixel (" + std::to_string(std::lround(footPx.x)) + ", " +
@@ -198,15 +205,7 @@ Result<Foot> hangingPointOf(const Measurement& m, const metrology::Cutout& cutou
   const std::string who = "cutout \"" + cutout.name + "\"";
   double outlineTop = 1e300;
   for (const glm::dvec2& p : cutout.outlinePx) outlineTop = std::min(outlineTop, p.y);
-  const int band = std::max(1, box.height / 50);
-  double sumU = 0;
-  int count = 0;
-  for (int v = box.y; v < box.y + band; ++v) {
-    for (int u = box.x; u < box.x + box.width; ++u) {
-      if (mask.at<uint8_t>(v, u)) sumU += u, ++count;
-    }
-  }
-  const glm::dvec2 topPx(sumU / std::max(1, count), std::max(outlineTop, -0.5));
+  const glm::dvec2 topPx(middleColumn(mask, box, box.y, box.y + bandRows(box)), std::max(outlineTop, -0.5));
   const std::optional<glm::dvec3> top = onPlane(m, topPx, glm::dvec3(0, m.size.heightM, 0), glm::dvec3(0, 1, 0));
   const std::string where = "(" + std::to_string(std::lround(topPx.x)) + ", " + std::to_string(std::lround(topPx.y)) + ")";
   if (!top || glm::length(*top - m.pose.positionM) > 1e4) {
