@@ -311,6 +311,7 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
   auto model = makeCorridorModel(name, stood->behind, measurement, attached, options);
   if (!model) return model;
   model->standing = std::move(stood->objects);
+  model->leftPainted = std::move(stood->leftPainted);
   if (openings.empty()) return model;
   const auto colourOf = [&](Surface s) { return model->meanColor[static_cast<int>(s)]; };
   const RoomColours colours{colourOf(Surface::kLeftWall), colourOf(Surface::kRightWall), colourOf(Surface::kFloor)};
@@ -462,6 +463,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       }
       scene.info.push_back(line);
     }
+    for (const std::string& reason : model.leftPainted) scene.info.push_back("left painted: " + reason);
     // Side openings: the room behind each, its surfaces textured where the photo sees
     // them through the opening.
     for (const SideRoom& room : model.rooms) {

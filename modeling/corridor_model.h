@@ -81,6 +81,9 @@ struct CorridorModel {
   // Objects stood up on the floor (stand_up.h); the textures above were cut from the
   // photo with them filled.
   std::vector<StandingObject> standing;
+  // The cutouts that could not stand up, each the reason naming it (StoodUp::leftPainted):
+  // painted on the surfaces as the photo shows them.
+  std::vector<std::string> leftPainted;
   // Openings in the side walls with a room behind each (side_room.h).
   std::vector<SideRoom> rooms;
   // Per surface, for its untextured parts: the mean of the photo's pixels where it
@@ -105,8 +108,9 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
 
 // The same with `cutouts` stood up on the floor (stand_up.h): the surfaces are cut from
 // the photo with the objects filled, and the model holds them in `standing`; cutouts of
-// shape kOpening open the side wall with a room behind (side_room.h), in `rooms`. Errors
-// name the object (and the corridor).
+// shape kOpening open the side wall with a room behind (side_room.h), in `rooms`. An
+// object that cannot stand up is left painted, its reason in `leftPainted`. Errors name
+// the object (and the corridor).
 Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& photo,
                                         const metrology::Measurement& measurement,
                                         const std::vector<metrology::Cutout>& cutouts, bool attached,

@@ -608,39 +608,45 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
                        std::to_string(photo.rows) + " photo");
     }
   }
+  // The photo with `masks`' pixels (and a margin about them) filled from their surroundings.
+  const auto fillBehind = [&](const std::vector<cv::Mat>& masks) {
+    if (masks.empty()) return photo;
+    cv::Mat objects = cv::Mat::zeros(photo.size(), CV_8U), fill, behind;
+    for (const cv::Mat& mask : masks) objects |= mask;
+    cv::dilate(objects, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
+    cv::inpaint(photo, fill, behind, kFillRadiusPx, cv::INPAINT_TELEA);
+    return behind;
+  };
   const auto make = [&] {
     CutOuts cut;
-    cv::Mat objects = cv::Mat::zeros(photo.size(), CV_8U);
-    for (const std::vector<cv::Point>& outline : outlines) {
-      cut.masks.push_back(objectMask(photo, outline));
-      objects |= cut.masks.back();
-    }
-    if (outlines.empty()) {
-      cut.behind = photo;
-    } else if (parts == StandUpParts::kObjectsAndFill) {
-      cv::Mat fill;
-      cv::dilate(objects, fill, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kFillMarginPx + 1, 2 * kFillMarginPx + 1)));
-      cv::inpaint(photo, fill, cut.behind, kFillRadiusPx, cv::INPAINT_TELEA);
-    }
+    for (const std::vector<cv::Point>& outline : outlines) cut.masks.push_back(objectMask(photo, outline));
+    if (outlines.empty() || parts == StandUpParts::kObjectsAndFill) cut.behind = fillBehind(cut.masks);
     return cut;
   };
   CutOuts made;
   const bool cached = cache && parts == StandUpParts::kObjectsAndFill;
   const CutOuts& cut = cached ? cache->get(photo, outlines, make) : (made = make());
   StoodUp out;
+  std::vector<cv::Mat> masks;  // the stood objects', in out.objects' order
   for (size_t i = 0; i < cutouts.size(); ++i) {
     auto object = standUp(photo, measurement, cutouts[i], cut.masks[i]);
-    if (!object) return object.error();
+    if (!object) {
+      out.leftPainted.push_back(object.message());
+      continue;
+    }
     out.objects.push_back(std::move(*object));
+    masks.push_back(cut.masks[i]);
   }
-  out.behind = cut.behind;
+  // Those left painted keep the photo's pixels: filled only about the others (rarely:
+  // not kept in the cache, which knows outlines, not what stood).
+  out.behind = out.leftPainted.empty() || cut.behind.empty() ? cut.behind : fillBehind(masks);
   // A box's outline need not hold every pixel of its object (a box is not the object's
   // exact shape): those it leaves out, and those along its edge, stay painted where the
   // photo shows them, not filled, so that from the photo's camera the model still gives
   // the photo.
   if (!cut.behind.empty()) {
     cv::Mat outside;
-    for (size_t i = 0; i < cutouts.size(); ++i) {
+    for (size_t i = 0; i < out.objects.size(); ++i) {
       if (out.objects[i].shape != metrology::CutoutShape::kBox) continue;
       std::vector<glm::dvec3> corners;
       for (const StandingFace& face : out.objects[i].faces) corners.insert(corners.end(), face.cornersM.begin(), face.cornersM.end());
@@ -649,11 +655,11 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
       // Along the outline's edge the box covers a pixel only in part (the renderer blends
       // it with what lies behind): those keep the photo's pixel behind too.
       cv::erode(inside, inside, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kSeamPx + 1, 2 * kSeamPx + 1)));
-      cv::Mat left = cut.masks[i] & ~inside;
+      cv::Mat left = masks[i] & ~inside;
       outside = outside.empty() ? left : (outside | left);
     }
     if (!outside.empty() && cv::countNonZero(outside) > 0) {
-      out.behind = cut.behind.clone();
+      out.behind = out.behind.clone();
       photo.copyTo(out.behind, outside);
     }
   }

@@ -69,7 +69,11 @@ struct StandingObject {
 
 struct StoodUp {
   std::vector<StandingObject> objects;
-  cv::Mat behind;  // the photo (BGR) with the objects' pixels filled from their surroundings
+  cv::Mat behind;  // the photo (BGR) with the stood objects' pixels filled from their surroundings
+  // The cutouts that could not stand up, each the reason naming it ("cutout "lamp": its
+  // top meets the ceiling beyond the corridor's ..."): they stay painted on the surfaces
+  // behind them (their pixels are not filled), as they were before they were outlined.
+  std::vector<std::string> leftPainted;
 };
 
 // What GrabCut and the fill make of a photo's outlines: each object's mask (CV_8U, the
@@ -117,11 +121,14 @@ std::optional<glm::dvec3> onPlane(const metrology::Measurement& m, glm::dvec2 ph
                                   glm::dvec3 normal);
 
 // Stands up each of `cutouts` in the measured corridor seen in `photo` (BGR, 8 bit).
-// Errors name the object: an outline outside the photo, an object GrabCut and the
-// outline leave empty, a lowest pixel above the horizon (it does not stand on the
-// floor the photo shows) or beyond the corridor's floor. `cache`: where the masks and
-// the fill are kept between calls (null: made each time; kObjectsOnly does not use it,
-// and leaves StoodUp::behind empty).
+// A cutout that cannot stand up in this corridor is left painted, with the reason in
+// StoodUp::leftPainted: an object GrabCut and the outline leave empty, a lowest pixel
+// above the horizon (it does not stand on the floor the photo shows) or beyond the
+// corridor's floor, a hanging object whose top is not on the ceiling. (The corners
+// moved, a cutout that stood up may no longer: the model still builds.) Errors are the
+// outlines themselves: a point not a number, an outline outside the photo. `cache`:
+// where the masks and the fill are kept between calls (null: made each time;
+// kObjectsOnly does not use it, and leaves StoodUp::behind empty).
 Result<StoodUp> standUpObjects(const cv::Mat& photo, const metrology::Measurement& measurement,
                                const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache = nullptr,
                                StandUpParts parts = StandUpParts::kObjectsAndFill);

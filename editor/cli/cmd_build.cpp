@@ -133,6 +133,11 @@ int runBuild(Args& args) {
   for (const modeling::CorridorOverlap& overlap : model->plan.overlaps) {
     std::fprintf(stderr, "warning: %s\n", modeling::overlapText(model->layout, overlap).c_str());
   }
+  for (const modeling::CorridorModel& corridor : model->corridors) {
+    for (const std::string& reason : corridor.leftPainted) {
+      std::fprintf(stderr, "warning: %s: %s; left painted on the surfaces behind it\n", corridor.name.c_str(), reason.c_str());
+    }
+  }
 
   // Everything that can fail on the input has failed by now; write the files, into
   // folders made for them if need be (as tour does).

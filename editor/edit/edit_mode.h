@@ -268,6 +268,9 @@ class EditMode : public app::AppMode {
   void updateBoxFits();
   // The shown box of the cutout named so, in photo pixels (nullopt: none for the shot as it is).
   std::optional<std::array<glm::dvec2, 8>> shownBoxPx(const std::string& name) const;
+  // Why the cutout `name` could not stand up in the preview's full model of the shot as
+  // it is (it is left painted), or nothing (it stood up, or no such model yet).
+  std::optional<std::string> leftPainted(const std::string& name) const;
   std::optional<glm::dvec2> panFrom_;  // the cursor when a pan began or last moved
   int panButton_ = -1;
   glm::dvec2 cursorPx_{-1.0};

@@ -162,8 +162,8 @@ std::optional<modeling::StandingObject> EditMode::checkStandUp(app::Shell& shell
   }
   auto stood = modeling::standUpObjects(doc_->photo(), *live_.measurement, {cutout}, nullptr,
                                         modeling::StandUpParts::kObjectsOnly);
-  if (!stood) {
-    shell.showMessage("stand up: " + stood.message());
+  if (!stood || stood->objects.empty()) {
+    shell.showMessage("stand up: " + (stood ? stood->leftPainted.front() : stood.message()));
     return std::nullopt;
   }
   return std::move(stood->objects.front());
@@ -285,7 +285,7 @@ void EditMode::updateBoxFits() {
         if (cutout.shape != metrology::CutoutShape::kBox) continue;
         // Each alone: one that cannot stand up (its message came at the check) draws nothing.
         auto stood = modeling::standUpObjects(r.photo, r.measurement, {cutout}, cutOuts.get());
-        if (!stood || stood->objects.front().faces.size() < 2) continue;
+        if (!stood || stood->objects.empty() || stood->objects.front().faces.size() < 2) continue;
         const auto& front = stood->objects.front().faces[0].cornersM;
         const auto& back = stood->objects.front().faces[1].cornersM;  // seen from behind: mirrored
         done.boxes.push_back({cutout.name, {front[0], front[1], front[2], front[3], back[1], back[0], back[3], back[2]}});
@@ -326,14 +326,19 @@ void EditMode::drawCutoutOverlay(ImDrawList* list) const {
     }
   }
   for (const Cutout& cutout : doc_->shot().cutouts) {
-    const ImU32 colour = cutout.shape == metrology::CutoutShape::kOpening ? kOpeningColour : kCutoutColour;
+    // One the model could not stand up: in the warnings' colour, and said on its label.
+    const bool painted = leftPainted(cutout.name).has_value();
+    const ImU32 colour = painted ? ImGui::ColorConvertFloat4ToU32(ui::kWarningColour)
+                         : cutout.shape == metrology::CutoutShape::kOpening ? kOpeningColour
+                                                                             : kCutoutColour;
     std::vector<ImVec2> ring;
     for (const glm::dvec2& p : cutout.outlinePx) ring.push_back(im(canvas_.toWindow(p)));
     list->AddPolyline(ring.data(), static_cast<int>(ring.size()), kCutoutShadow, ImDrawFlags_Closed, 3.5f);
     list->AddPolyline(ring.data(), static_cast<int>(ring.size()), colour, ImDrawFlags_Closed, 1.5f);
     glm::dvec2 top = cutout.outlinePx.front();
     for (const glm::dvec2& p : cutout.outlinePx) top = p.y < top.y ? p : top;
-    ui::labelOnPlate(list, im(canvas_.toWindow(top) + glm::dvec2(4, -18)), cutout.name, colour);
+    ui::labelOnPlate(list, im(canvas_.toWindow(top) + glm::dvec2(4, -18)), painted ? cutout.name + " (left painted)" : cutout.name,
+                     colour);
   }
   if (!outlining_) return;
   if (!outlinePolygon_.empty()) {
@@ -412,8 +417,20 @@ void EditMode::drawCutouts(app::Shell& shell) {
       rememberWidget(("cutout " + std::to_string(i + 1) + " " + choice.label).c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choice.tooltip);
     }
+    if (const std::optional<std::string> why = leftPainted(cutout.name)) ui::wrapped(ui::kWarningColour, "left painted: " + *why);
     ImGui::PopID();
   }
+}
+
+std::optional<std::string> EditMode::leftPainted(const std::string& cutoutName) const {
+  if (!doc_) return std::nullopt;
+  const std::shared_ptr<const engine::Scene> built = preview_.fullSceneOf(doc_->modelShot());
+  if (!built) return std::nullopt;
+  const std::string prefix = "left painted: cutout \"" + cutoutName + "\": ";
+  for (const std::string& line : built->info) {
+    if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+  }
+  return std::nullopt;
 }
 
 void EditMode::addCutoutsTrace(app::TraceRow& row) const {
@@ -432,6 +449,8 @@ void EditMode::addCutoutsTrace(app::TraceRow& row) const {
         for (const glm::dvec2& p : *box) corners.push_back({p.x, p.y});
         entry["box_px"] = corners;  // as drawn: the front's four, then the back's
       }
+      const std::optional<std::string> why = leftPainted(c.name);
+      entry["left_painted"] = why ? ordered_json(*why) : ordered_json(nullptr);
       cutouts.push_back(std::move(entry));
     }
   }

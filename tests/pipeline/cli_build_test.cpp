@@ -531,6 +531,26 @@ TEST(BuildCommand, MakesTheOutputFolder) {
   EXPECT_EQ(scene->shapes.size(), 10u);
 }
 
+// An object that cannot stand up in the corridor (here one outlined above the horizon,
+// which stands on no floor the photo shows) is left painted: the model builds, with the
+// others stood up, and the command and the model say which and why.
+TEST(BuildCommand, AnObjectThatCannotStandUpIsLeftPaintedAndSaid) {
+  const fs::path dir = freshDir("left_painted");
+  const fs::path standing = fs::path(PW_GROUNDTRUTH_DIR) / "random" / "seed_00000_standing.json";
+  nlohmann::json shot = nlohmann::json::parse(readText(standing));
+  shot["image"] = (standing.parent_path() / shot["image"].get<std::string>()).string();
+  shot["cutouts"].push_back({{"name", "sign"}, {"outline_px", {{480, 20}, {560, 20}, {560, 80}, {480, 80}}}});
+  writeText(dir / "shot.json", shot.dump());
+  const CommandRun run = photowalk("build " + shellQuoted(dir / "shot.json") + " -o " + shellQuoted(dir / "m.wrl"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: shot: cutout \"sign\": "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("above the horizon"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("; left painted on the surfaces behind it"), std::string::npos) << run.output;
+  const std::string model = readText(dir / "m.wrl");
+  EXPECT_NE(model.find("left painted: cutout \\\"sign\\\""), std::string::npos);
+  EXPECT_NE(model.find("stood up: person_8"), std::string::npos);
+}
+
 // --photo-only keeps only what the photo shows: five textures, untextured strips, the
 // corridor open behind the camera, and no line saying anything is synthesized.
 TEST(BuildCommand, PhotoOnlyKeepsWhatThePhotoShows) {

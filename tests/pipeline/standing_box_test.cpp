@@ -272,8 +272,8 @@ TEST(StandingBoxes, WhatTheBoxLeavesOutOfItsObjectStaysPainted) {
 
 // A hanging sign in a long, low corridor (the ceiling 0.5 m above the eye): near the
 // camera its top row places it; 30 m down, where 4 px of that row move it metres, it is
-// refused by name rather than hung metres off.
-TEST(HangingObjects, OneFarDownALowCorridorIsRefusedByName) {
+// left painted, by name, rather than hung metres off.
+TEST(HangingObjects, OneFarDownALowCorridorIsLeftPaintedByName) {
   SyntheticCorridor c;
   c.widthM = 2.0, c.heightM = 2.2, c.lengthM = 40;
   c.cameraZM = 2.0, c.cameraHeightM = 1.7;
@@ -307,10 +307,22 @@ TEST(HangingObjects, OneFarDownALowCorridorIsRefusedByName) {
   ASSERT_TRUE(hung.ok()) << hung.message();
   // Measured: z -3.53 (true -3.985): the outline's top 4 px above the sign's, 0.12 m a pixel here.
   EXPECT_NEAR(hung->objects.at(0).footM.z, -3.985, 0.6);
+  // The far one is left painted, by name: its pixels not filled (the photo's own behind it).
   auto refused = standUpObjects(photo, *m, {outline(farSign, "far sign")});
-  ASSERT_FALSE(refused.ok());
-  EXPECT_NE(refused.message().find("cutout \"far sign\": where it hangs is not in the photo"), std::string::npos)
-      << refused.message();
+  ASSERT_TRUE(refused.ok()) << refused.message();
+  EXPECT_TRUE(refused->objects.empty());
+  ASSERT_EQ(refused->leftPainted.size(), 1u);
+  EXPECT_NE(refused->leftPainted[0].find("cutout \"far sign\": where it hangs is not in the photo"), std::string::npos)
+      << refused->leftPainted[0];
+  const glm::dvec2 farPx(metrology::projectWithMeasurement(*m, 0.5 * (farSign.lo + farSign.hi)));
+  const cv::Point far(static_cast<int>(std::lround(farPx.x)), static_cast<int>(std::lround(farPx.y)));
+  EXPECT_EQ(refused->behind.at<cv::Vec3b>(far), cv::Vec3b(40, 60, 200));
+  // With the near one: it still hangs.
+  auto both = standUpObjects(photo, *m, {outline(nearSign, "near sign"), outline(farSign, "far sign")});
+  ASSERT_TRUE(both.ok()) << both.message();
+  ASSERT_EQ(both->objects.size(), 1u);
+  EXPECT_EQ(both->objects[0].name, "near sign");
+  EXPECT_EQ(both->leftPainted.size(), 1u);
 }
 
 }  // namespace
