@@ -78,11 +78,12 @@ Grid footprints(cv::Size textureSize, const PhotoOfTexel& photoOf, cv::Size phot
 
 // Texel coverage: a cell whose four corners the photo shows is shown whole (the photo's
 // frame maps to a convex region of the plane); the others are evaluated per texel.
-cv::Mat1b coverage(cv::Size size, const PhotoOfTexel& photoOf, cv::Size photoSize) {
+// `marginPx`: texels within this of the photo's border count as not shown.
+cv::Mat1b coverage(cv::Size size, const PhotoOfTexel& photoOf, cv::Size photoSize, double marginPx = kBorderPx) {
   cv::Mat1b mask(size, uint8_t(0));
   const auto shows = [&](double x, double y) {
     const auto p = photoOf(x, y);
-    return p && insidePhoto(*p, photoSize, kBorderPx);
+    return p && insidePhoto(*p, photoSize, marginPx);
   };
   for (int y0 = 0; y0 < size.height; y0 += kCell) {
     for (int x0 = 0; x0 < size.width; x0 += kCell) {
@@ -554,7 +555,16 @@ SynthesisStats synthesizeSurface(cv::Mat& texture, const PhotoOfTexel& photoOf, 
       exemplar ? periodAlongX(lum(cv::Range::all(), cv::Range(x0, x1)), shown(cv::Range::all(), cv::Range(x0, x1))) : 0.0;
   stats.periodPx = static_cast<int>(std::lround(period));
   // Filled first, so that the exemplar's own gaps hold texture before it lends detail.
-  if (options.fill) fill(pixels, lum, shown, period, exemplar ? x1 : texture.cols, stats);
+  if (options.fill) {
+    // The texels along the photo's border (within kBorderPx of it) lend nothing, but
+    // they are the photo's own: filled over, the photo's camera saw synthesized texture
+    // in the photo's outermost rows and columns (TUNE seed 36: 4.5 dB lower from the
+    // photo's camera once a person stood up, because the fill there changed with her).
+    const cv::Mat1b border = coverage(texture.size(), photoOf, photoSize, 0.0) & ~shown;
+    const cv::Mat3b photoOwn = pixels.clone();
+    fill(pixels, lum, shown, period, exemplar ? x1 : texture.cols, stats);
+    photoOwn.copyTo(pixels, border);
+  }
   if (options.detail && exemplar) {
     cv::Mat1f filledLum;
     cv::cvtColor(pixels, grey, cv::COLOR_BGR2GRAY);

@@ -67,6 +67,12 @@ TEST(Synthesis, ASurfaceThatDoesNotRepeatIsMirroredWithoutASeam) {
   const cv::Mat3b t = texture;
   const int edge = kShownFrom + 2;  // the first column shown (less the border)
   for (int k = 0; k < 20; ++k) {
+    if (k < 2) {
+      // The border's two columns lend nothing but stay the photo's own (the photo's
+      // camera sees them).
+      EXPECT_EQ(cv::norm(cv::Mat(t.col(edge - 1 - k)), cv::Mat(smooth.col(edge - 1 - k)), cv::NORM_INF), 0.0) << k;
+      continue;
+    }
     // Mirrored about the edge: the k-th column before it is the k-th after it.
     EXPECT_EQ(cv::norm(cv::Mat(t.col(edge - 1 - k)), cv::Mat(t.col(edge + k)), cv::NORM_INF), 0.0) << k;
   }
