@@ -172,22 +172,33 @@ double middleColumn(const cv::Mat& mask, const cv::Rect& box, int v0, int v1) {
 
 int bandRows(const cv::Rect& box) { return std::max(1, box.height / 50); }
 
+// GrabCut can lose an object's lower part where it looks like what lies around it (a
+// person's legs over a floor of their colours, TUNE seed 71: the mask stopped 54 px above
+// the outline's bottom, 50 px above her feet, and she stood 10 m too far). Where the mask
+// stops more than this above the outline's bottom (at least kLostFootPx), the outline,
+// which a person draws down to where the object stands, places the foot instead.
+constexpr double kLostFootShare = 0.2;  // of the outline's height
+constexpr double kLostFootPx = 12;
+
 Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const cv::Mat& mask, const cv::Rect& box) {
   const std::string who = "cutout \"" + cutout.name + "\"";
   // The object's lowest row, at the middle of its pixels there (the bottom edge of that
   // row: where the object meets the floor).
   const int footRow = box.y + box.height - 1;
-  const glm::dvec2 footPx(middleColumn(mask, box, footRow - bandRows(box) + 1, footRow + 1), footRow + 0.5);
+  glm::dvec2 footPx(middleColumn(mask, box, footRow - bandRows(box) + 1, footRow + 1), footRow + 0.5);
+  double outlineTop = 1e300, outlineBottom = -1e300;
+  for (const glm::dvec2& p : cutout.outlinePx) outlineTop = std::min(outlineTop, p.y), outlineBottom = std::max(outlineBottom, p.y);
+  if (outlineBottom - footPx.y > std::max(kLostFootPx, kLostFootShare * (outlineBottom - outlineTop))) footPx.y = outlineBottom;
   const std::optional<glm::dvec3> foot = onPlane(m, footPx, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
   if (!foot || glm::length(*foot - m.pose.positionM) > 1e4) {
     return makeError(who + ": its lowest pixel (" + std::to_string(std::lround(footPx.x)) + ", " +
-                     std::to_string(footRow) +
+                     std::to_string(static_cast<int>(std::floor(footPx.y))) +
                      ") is on or above the horizon: draw the outline down to where the object stands on the floor");
   }
   constexpr double kSlackM = 0.05;
   if (std::abs(foot->x) > 0.5 * m.size.widthM + kSlackM || foot->z < -m.size.lengthM - kSlackM) {
     return makeError(who + ": its lowest pixel found (" + std::to_string(std::lround(footPx.x)) + ", " +
-                     std::to_string(footRow) + ") meets the floor beyond the corridor's (at x " +
+                     std::to_string(static_cast<int>(std::floor(footPx.y))) + ") meets the floor beyond the corridor's (at x " +
                      std::to_string(foot->x).substr(0, 5) + " m, z " + std::to_string(foot->z).substr(0, 6) +
                      " m): draw the outline down to where the object stands on this corridor's floor");
   }

@@ -325,5 +325,44 @@ TEST(HangingObjects, OneFarDownALowCorridorIsLeftPaintedByName) {
   EXPECT_EQ(both->leftPainted.size(), 1u);
 }
 
+// A person whose legs are the floor's colour (TUNE seed 71's trouble): GrabCut keeps her
+// torso only, its lowest pixel far above her feet; the outline, drawn down to where she
+// stands, places her foot instead, within a pixel's worth of where she stands.
+TEST(StandingObjects, AnObjectWhoseFootGrabCutLosesStandsWhereItsOutlineEnds) {
+  SyntheticCorridor c;
+  c.widthM = 3.0, c.heightM = 2.8, c.lengthM = 20;
+  c.cameraZM = 2.0, c.cameraHeightM = 1.6;
+  c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
+  const Cabinet torso{{-0.25, 0.9, -6.0}, {0.25, 1.7, -5.8}}, legs{{-0.15, 0.0, -6.0}, {0.15, 0.9, -5.8}};
+  const cv::Vec3b floorColour(120, 130, 140);
+  cv::Mat photo(c.imageHeight, c.imageWidth, CV_8UC3);
+  for (int v = 0; v < c.imageHeight; ++v) {
+    for (int u = 0; u < c.imageWidth; ++u) {
+      const glm::dvec3 d = c.ray({u, v});
+      const metrology::testing::Hit wall = metrology::testing::castRay(c, c.eyeM(), d);
+      cv::Vec3b colour = wall.plane == static_cast<int>(metrology::Plane::kFloor) ? floorColour : cv::Vec3b(static_cast<uint8_t>(170 + 15 * std::max(0, wall.plane)), 180, 190);
+      if (hitBox(legs, c.eyeM(), d).first > 0) colour = floorColour;  // legs the floor's colour
+      if (hitBox(torso, c.eyeM(), d).first > 0) colour = cv::Vec3b(40, 60, 200);
+      photo.at<cv::Vec3b>(v, u) = colour;
+    }
+  }
+  auto m = metrology::measureCorridor(c.shot());
+  ASSERT_TRUE(m.ok()) << m.message();
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const Cabinet* part : {&torso, &legs}) {
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 p(k & 1 ? part->hi.x : part->lo.x, k & 2 ? part->hi.y : part->lo.y, k & 4 ? part->hi.z : part->lo.z);
+      const glm::dvec2 px(metrology::projectWithMeasurement(*m, p));
+      lo = glm::min(lo, px), hi = glm::max(hi, px);
+    }
+  }
+  lo -= glm::dvec2(4.0), hi += glm::dvec2(4.0);
+  auto stood = standUpObjects(photo, *m, {metrology::Cutout{"her", {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}}});
+  ASSERT_TRUE(stood.ok()) << stood.message();
+  ASSERT_EQ(stood->objects.size(), 1u) << (stood->leftPainted.empty() ? "" : stood->leftPainted[0]);
+  // The outline's bottom is 4 px below her feet' nearest edge (z -5.8): about 0.25 m nearer here.
+  EXPECT_NEAR(stood->objects[0].footM.z, -5.8, 0.4);
+}
+
 }  // namespace
 }  // namespace pw::modeling
