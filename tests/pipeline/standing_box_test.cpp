@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -46,6 +47,34 @@ std::pair<double, int> hitBox(const Cabinet& c, const glm::dvec3& o, const glm::
     far = std::min(far, t1);
   }
   return near <= far && near > 0 ? std::pair{near, axis} : std::pair{-1.0, -1};
+}
+
+// The corridor's photo, one ray a pixel, each pixel `colourOf` the ray's direction and
+// the corridor surface it meets.
+cv::Mat rayCastPhoto(const SyntheticCorridor& c,
+                     const std::function<cv::Vec3b(const glm::dvec3& d, const metrology::testing::Hit& wall)>& colourOf) {
+  cv::Mat photo(c.imageHeight, c.imageWidth, CV_8UC3);
+  for (int v = 0; v < c.imageHeight; ++v) {
+    for (int u = 0; u < c.imageWidth; ++u) {
+      const glm::dvec3 d = c.ray({u, v});
+      photo.at<cv::Vec3b>(v, u) = colourOf(d, metrology::testing::castRay(c, c.eyeM(), d));
+    }
+  }
+  return photo;
+}
+
+// A person's rectangle `marginPx` beyond the boxes' pixels as the measured camera sees them.
+std::vector<glm::dvec2> rectangleAround(const metrology::Measurement& m, const std::vector<Cabinet>& boxes, double marginPx) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const Cabinet& box : boxes) {
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 p(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z);
+      const glm::dvec2 px(metrology::projectWithMeasurement(m, p));
+      lo = glm::min(lo, px), hi = glm::max(hi, px);
+    }
+  }
+  lo -= glm::dvec2(marginPx), hi += glm::dvec2(marginPx);
+  return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
 }
 
 struct Scene {
@@ -279,29 +308,16 @@ TEST(HangingObjects, OneFarDownALowCorridorIsLeftPaintedByName) {
   c.cameraZM = 2.0, c.cameraHeightM = 1.7;
   c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
   const Cabinet nearSign{{-0.4, 1.7, -4.0}, {0.4, 2.2, -3.97}}, farSign{{-0.4, 1.7, -30.0}, {0.4, 2.2, -29.97}};
-  cv::Mat photo(c.imageHeight, c.imageWidth, CV_8UC3);
-  for (int v = 0; v < c.imageHeight; ++v) {
-    for (int u = 0; u < c.imageWidth; ++u) {
-      const glm::dvec3 d = c.ray({u, v});
-      const metrology::testing::Hit wall = metrology::testing::castRay(c, c.eyeM(), d);
-      cv::Vec3b colour(static_cast<uint8_t>(150 + 15 * std::max(0, wall.plane)), 170, 180);
-      for (const Cabinet* sign : {&nearSign, &farSign}) {
-        if (hitBox(*sign, c.eyeM(), d).first > 0) colour = cv::Vec3b(40, 60, 200);
-      }
-      photo.at<cv::Vec3b>(v, u) = colour;
+  const cv::Mat photo = rayCastPhoto(c, [&](const glm::dvec3& d, const metrology::testing::Hit& wall) {
+    for (const Cabinet* sign : {&nearSign, &farSign}) {
+      if (hitBox(*sign, c.eyeM(), d).first > 0) return cv::Vec3b(40, 60, 200);
     }
-  }
+    return cv::Vec3b(static_cast<uint8_t>(150 + 15 * std::max(0, wall.plane)), 170, 180);
+  });
   auto m = metrology::measureCorridor(c.shot());
   ASSERT_TRUE(m.ok()) << m.message();
   const auto outline = [&](const Cabinet& sign, const std::string& name) {
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (int k = 0; k < 8; ++k) {
-      const glm::dvec3 p(k & 1 ? sign.hi.x : sign.lo.x, k & 2 ? sign.hi.y : sign.lo.y, k & 4 ? sign.hi.z : sign.lo.z);
-      const glm::dvec2 px(metrology::projectWithMeasurement(*m, p));
-      lo = glm::min(lo, px), hi = glm::max(hi, px);
-    }
-    lo -= glm::dvec2(4.0), hi += glm::dvec2(4.0);
-    return metrology::Cutout{name, {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, metrology::CutoutShape::kHanging};
+    return metrology::Cutout{name, rectangleAround(*m, {sign}, 4.0), metrology::CutoutShape::kHanging};
   };
   auto hung = standUpObjects(photo, *m, {outline(nearSign, "near sign")});
   ASSERT_TRUE(hung.ok()) << hung.message();
@@ -335,29 +351,16 @@ TEST(StandingObjects, AnObjectWhoseFootGrabCutLosesStandsWhereItsOutlineEnds) {
   c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
   const Cabinet torso{{-0.25, 0.9, -6.0}, {0.25, 1.7, -5.8}}, legs{{-0.15, 0.0, -6.0}, {0.15, 0.9, -5.8}};
   const cv::Vec3b floorColour(120, 130, 140);
-  cv::Mat photo(c.imageHeight, c.imageWidth, CV_8UC3);
-  for (int v = 0; v < c.imageHeight; ++v) {
-    for (int u = 0; u < c.imageWidth; ++u) {
-      const glm::dvec3 d = c.ray({u, v});
-      const metrology::testing::Hit wall = metrology::testing::castRay(c, c.eyeM(), d);
-      cv::Vec3b colour = wall.plane == static_cast<int>(metrology::Plane::kFloor) ? floorColour : cv::Vec3b(static_cast<uint8_t>(170 + 15 * std::max(0, wall.plane)), 180, 190);
-      if (hitBox(legs, c.eyeM(), d).first > 0) colour = floorColour;  // legs the floor's colour
-      if (hitBox(torso, c.eyeM(), d).first > 0) colour = cv::Vec3b(40, 60, 200);
-      photo.at<cv::Vec3b>(v, u) = colour;
-    }
-  }
+  const cv::Mat photo = rayCastPhoto(c, [&](const glm::dvec3& d, const metrology::testing::Hit& wall) {
+    if (hitBox(torso, c.eyeM(), d).first > 0) return cv::Vec3b(40, 60, 200);
+    if (hitBox(legs, c.eyeM(), d).first > 0) return floorColour;  // legs the floor's colour
+    return wall.plane == static_cast<int>(metrology::Plane::kFloor)
+               ? floorColour
+               : cv::Vec3b(static_cast<uint8_t>(170 + 15 * std::max(0, wall.plane)), 180, 190);
+  });
   auto m = metrology::measureCorridor(c.shot());
   ASSERT_TRUE(m.ok()) << m.message();
-  glm::dvec2 lo(1e300), hi(-1e300);
-  for (const Cabinet* part : {&torso, &legs}) {
-    for (int k = 0; k < 8; ++k) {
-      const glm::dvec3 p(k & 1 ? part->hi.x : part->lo.x, k & 2 ? part->hi.y : part->lo.y, k & 4 ? part->hi.z : part->lo.z);
-      const glm::dvec2 px(metrology::projectWithMeasurement(*m, p));
-      lo = glm::min(lo, px), hi = glm::max(hi, px);
-    }
-  }
-  lo -= glm::dvec2(4.0), hi += glm::dvec2(4.0);
-  auto stood = standUpObjects(photo, *m, {metrology::Cutout{"her", {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}}});
+  auto stood = standUpObjects(photo, *m, {metrology::Cutout{"her", rectangleAround(*m, {torso, legs}, 4.0)}});
   ASSERT_TRUE(stood.ok()) << stood.message();
   ASSERT_EQ(stood->objects.size(), 1u) << (stood->leftPainted.empty() ? "" : stood->leftPainted[0]);
   // The outline's bottom is 4 px below her feet' nearest edge (z -5.8): about 0.25 m nearer here.
