@@ -73,6 +73,11 @@ std::string freeCutoutName(const Shot& shot, metrology::CutoutShape shape) {
   }
 }
 
+// The outline's lowest point in the photo (the largest v).
+glm::dvec2 lowestPoint(const std::vector<glm::dvec2>& outline) {
+  return *std::max_element(outline.begin(), outline.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.y < b.y; });
+}
+
 std::array<glm::dvec2, 4> rectangle(glm::dvec2 a, glm::dvec2 b) {
   const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
   return {lo, glm::dvec2(hi.x, lo.y), hi, glm::dvec2(lo.x, hi.y)};
@@ -216,11 +221,18 @@ void EditMode::standUpOutline(app::Shell& shell, const std::vector<glm::dvec2>& 
     shell.showMessage(openingText(after.cutouts.back().name, *room));
     return;
   }
+  // An outline whose lowest point is on or above the horizon cannot stand on the floor
+  // the photo shows: it hangs from the ceiling (a lamp, a sign), as "hanging" would make it.
+  if (live_.measurement && !modeling::onPlane(*live_.measurement, lowestPoint(outline), glm::dvec3(0.0), glm::dvec3(0, 1, 0))) {
+    cutout.shape = metrology::CutoutShape::kHanging;
+  }
   const std::optional<modeling::StandingObject> object = checkStandUp(shell, cutout);
   if (!object) return;
-  char said[160];
-  std::snprintf(said, sizeof said, "stood up %s: %.2f m high, %.2f m wide, %.1f m from the camera", cutout.name.c_str(),
-                object->heightM, object->widthM, object->distanceM);
+  const bool hangs = cutout.shape == metrology::CutoutShape::kHanging;
+  char said[200];
+  std::snprintf(said, sizeof said, "stood up %s: %s%.2f m high, %.2f m wide, %.1f m from the camera", cutout.name.c_str(),
+                hangs ? "it hangs from the ceiling (above the horizon), " : "", object->heightM, object->widthM,
+                object->distanceM);
   after.cutouts.push_back(std::move(cutout));
   applyEdit(shell, after, "stand up " + after.cutouts.back().name);
   shell.showMessage(said);

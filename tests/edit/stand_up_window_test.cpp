@@ -5,7 +5,8 @@
 // refused with the reason and changes nothing; a name typed into the list is kept; its
 // "box" stands it up as a box, undoably; the saved copy carries the cutout and `photowalk
 // build` stands the person up from it, as tall as she is; O and a doorway's corners clicked
-// open the wall there. Validation on (PW_VALIDATION=1).
+// open the wall there; a rectangle around a lamp above the horizon hangs it; a cutout the
+// model cannot stand up is said left painted. Validation on (PW_VALIDATION=1).
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "metrology/measure.h"
+#include "modeling/pipeline.h"
 #include "tests/edit/edit_run.h"
 
 namespace pw::edit::test {
@@ -291,6 +294,55 @@ TEST_F(StandUp, AnObjectThatCannotStandUpIsSaidLeftPaintedInTheList) {
   ASSERT_TRUE(cutouts[1].at("left_painted").is_string()) << cutouts.dump();
   EXPECT_NE(cutouts[1]["left_painted"].get<std::string>().find("above the horizon"), std::string::npos) << cutouts.dump();
   EXPECT_TRUE(rows.at(1).raw.at("cutouts")[1].at("left_painted").is_null()) << "before the model is built";
+}
+
+// A rectangle around a lamp hanging above the horizon (TUNE seed 0's lamp 14, 4 px around
+// its box as the photo shows it, rod included): it cannot stand on the floor, so U makes it
+// a hanging cut-out at once ("it hangs from the ceiling"), and `build` of the saved copy
+// hangs it from the ceiling.
+TEST_F(StandUp, ALampAboveTheHorizonHangsFromTheCeiling) {
+  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(dir_ / "seed_00000.json"));
+  const nlohmann::json* lamp = nullptr;
+  for (const nlohmann::json& o : truth.at("objects")) {
+    if (o.at("id") == 14) lamp = &o;
+  }
+  ASSERT_TRUE(lamp && lamp->at("kind") == "lamp") << "no lamp 14 in the scene's answers";
+  auto shot = modeling::measureShotFile(dir_ / "seed_00000.json");
+  ASSERT_TRUE(shot.ok()) << shot.message();
+  const glm::dvec3 place(lamp->at("place_m")[0].get<double>(), lamp->at("place_m")[1].get<double>(),
+                         lamp->at("place_m")[2].get<double>());
+  const double drop = lamp->at("size_m")[1].get<double>(), half = 0.5 * lamp->at("size_m")[0].get<double>();
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 corner(place.x + (k & 1 ? half : -half), k & 2 ? place.y + drop : place.y, place.z + (k & 4 ? half : -half));
+    const glm::dvec2 px(metrology::projectWithMeasurement(shot->measurement, corner));
+    lo = glm::min(lo, px), hi = glm::max(hi, px);
+  }
+  lo -= glm::dvec2(4.0), hi += glm::dvec2(4.0);
+
+  const auto first = edit("layout", "2 quit\n");
+  ASSERT_GE(first.size(), 2u);
+  const Row& r = first.back();
+  const glm::dvec2 a = r.toWindow(lo), b = r.toWindow(hi);
+  Script s;
+  s.key(3, "U");
+  s.drag(5, a, b - a, 6);  // frames 5-12
+  s.at(14, "save-copy hung.json").at(16, "quit");
+  std::string output;
+  const auto rows = edit("hang", s.str(), &output);
+  ASSERT_GE(rows.size(), 15u);
+  const nlohmann::json cutouts = rows.at(14).raw.at("cutouts");
+  ASSERT_EQ(cutouts.size(), 1u) << output;
+  EXPECT_EQ(cutouts[0].at("shape"), "hanging") << cutouts.dump();
+  EXPECT_NE(output.find("stood up object 1: it hangs from the ceiling"), std::string::npos) << output;
+  const CommandRun built = photowalk("build " + (dir_ / "hung.json").string() + " -o " + (dir_ / "hung.wrl").string());
+  ASSERT_EQ(built.exitCode, 0) << built.output;
+  std::ifstream model(dir_ / "hung.wrl");
+  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(text, m, std::regex("stood up: object 1 \\([^)]*\\), a cut-out [0-9.]+ m wide and ([0-9.]+) m high hanging from the ceiling")))
+      << "no hanging line in the model";
+  EXPECT_NEAR(std::stod(m[1]), drop, 0.12 * drop);  // 0.81 m measured by StandingObjects.AHangingLampHangsWhereItHangs
 }
 
 }  // namespace
