@@ -332,6 +332,18 @@ engine::Camera photoCamera(const Measurement& m, int imageWidth, int imageHeight
   return camera;
 }
 
+// The info line of a cutout left painted: this, then its reason (StoodUp::leftPainted,
+// which starts "cutout "NAME": ").
+const std::string kLeftPaintedInfo = "left painted: ";
+
+std::optional<std::string> leftPaintedReason(const engine::Scene& scene, const std::string& cutoutName) {
+  const std::string prefix = kLeftPaintedInfo + "cutout \"" + cutoutName + "\": ";
+  for (const std::string& line : scene.info) {
+    if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+  }
+  return std::nullopt;
+}
+
 engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, const BuildingPlan& plan,
                                 const ModelOptions& options) {
   engine::Scene scene;
@@ -463,7 +475,7 @@ engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, con
       }
       scene.info.push_back(line);
     }
-    for (const std::string& reason : model.leftPainted) scene.info.push_back("left painted: " + reason);
+    for (const std::string& reason : model.leftPainted) scene.info.push_back(kLeftPaintedInfo + reason);
     // Side openings: the room behind each, its surfaces textured where the photo sees
     // them through the opening.
     for (const SideRoom& room : model.rooms) {

@@ -116,6 +116,11 @@ Result<CorridorModel> makeCorridorModel(const std::string& name, const cv::Mat& 
                                         const std::vector<metrology::Cutout>& cutouts, bool attached,
                                         const ModelOptions& options);
 
+// Why the scene's cutout `cutoutName` was left painted (its "left painted: cutout
+// "NAME": ..." info line, which makeBuildingScene writes), or nothing: it stood up, or there
+// is no such cutout.
+std::optional<std::string> leftPaintedReason(const engine::Scene& scene, const std::string& cutoutName);
+
 // A whole building (or one corridor): shapes, lights, viewpoints, navigation.
 // `plan` places the corridors and holds the openings.
 engine::Scene makeBuildingScene(const std::vector<CorridorModel>& corridors, const BuildingPlan& plan,

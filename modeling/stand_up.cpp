@@ -172,6 +172,20 @@ double middleColumn(const cv::Mat& mask, const cv::Rect& box, int v0, int v1) {
 
 int bandRows(const cv::Rect& box) { return std::max(1, box.height / 50); }
 
+// The outline's topmost and bottommost rows in the photo (its points' least and greatest v).
+struct OutlineRows {
+  double top = 1e300, bottom = -1e300;
+};
+OutlineRows outlineRows(const metrology::Cutout& cutout) {
+  OutlineRows rows;
+  for (const glm::dvec2& p : cutout.outlinePx) rows.top = std::min(rows.top, p.y), rows.bottom = std::max(rows.bottom, p.y);
+  return rows;
+}
+
+// How far beyond the corridor's walls and far end a foot or a hanging place may fall (the
+// corners' own rounding) before it is not this corridor's.
+constexpr double kBeyondSlackM = 0.05;
+
 // GrabCut can lose an object's lower part where it looks like what lies around it (a
 // person's legs over a floor of their colours, TUNE seed 71: the mask stopped 54 px above
 // the outline's bottom, 50 px above her feet, and she stood 10 m too far). Where the mask
@@ -186,17 +200,15 @@ Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const
   // row: where the object meets the floor).
   const int footRow = box.y + box.height - 1;
   glm::dvec2 footPx(middleColumn(mask, box, footRow - bandRows(box) + 1, footRow + 1), footRow + 0.5);
-  double outlineTop = 1e300, outlineBottom = -1e300;
-  for (const glm::dvec2& p : cutout.outlinePx) outlineTop = std::min(outlineTop, p.y), outlineBottom = std::max(outlineBottom, p.y);
-  if (outlineBottom - footPx.y > std::max(kLostFootPx, kLostFootShare * (outlineBottom - outlineTop))) footPx.y = outlineBottom;
+  const OutlineRows outline = outlineRows(cutout);
+  if (outline.bottom - footPx.y > std::max(kLostFootPx, kLostFootShare * (outline.bottom - outline.top))) footPx.y = outline.bottom;
   const std::optional<glm::dvec3> foot = onPlane(m, footPx, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
   if (!foot || glm::length(*foot - m.pose.positionM) > 1e4) {
     return makeError(who + ": its lowest pixel (" + std::to_string(std::lround(footPx.x)) + ", " +
                      std::to_string(static_cast<int>(std::floor(footPx.y))) +
                      ") is on or above the horizon: draw the outline down to where the object stands on the floor");
   }
-  constexpr double kSlackM = 0.05;
-  if (std::abs(foot->x) > 0.5 * m.size.widthM + kSlackM || foot->z < -m.size.lengthM - kSlackM) {
+  if (std::abs(foot->x) > 0.5 * m.size.widthM + kBeyondSlackM || foot->z < -m.size.lengthM - kBeyondSlackM) {
     return makeError(who + ": its lowest pixel found (" + std::to_string(std::lround(footPx.x)) + ", " +
                      std::to_string(static_cast<int>(std::floor(footPx.y))) + ") meets the floor beyond the corridor's (at x " +
                      std::to_string(foot->x).substr(0, 5) + " m, z " + std::to_string(foot->z).substr(0, 6) +
@@ -214,17 +226,14 @@ constexpr double kHangingPlaceShare = 0.1;
 // corridor's ceiling. `m` of the result is the point on the floor below it.
 Result<Foot> hangingPointOf(const Measurement& m, const metrology::Cutout& cutout, const cv::Mat& mask, const cv::Rect& box) {
   const std::string who = "cutout \"" + cutout.name + "\"";
-  double outlineTop = 1e300;
-  for (const glm::dvec2& p : cutout.outlinePx) outlineTop = std::min(outlineTop, p.y);
-  const glm::dvec2 topPx(middleColumn(mask, box, box.y, box.y + bandRows(box)), std::max(outlineTop, -0.5));
+  const glm::dvec2 topPx(middleColumn(mask, box, box.y, box.y + bandRows(box)), std::max(outlineRows(cutout).top, -0.5));
   const std::optional<glm::dvec3> top = onPlane(m, topPx, glm::dvec3(0, m.size.heightM, 0), glm::dvec3(0, 1, 0));
   const std::string where = "(" + std::to_string(std::lround(topPx.x)) + ", " + std::to_string(std::lround(topPx.y)) + ")";
   if (!top || glm::length(*top - m.pose.positionM) > 1e4) {
     return makeError(who + ": its top " + where +
                      " is on or below the horizon: draw the outline up to where the object hangs from the ceiling");
   }
-  constexpr double kSlackM = 0.05;
-  if (std::abs(top->x) > 0.5 * m.size.widthM + kSlackM || top->z < -m.size.lengthM - kSlackM) {
+  if (std::abs(top->x) > 0.5 * m.size.widthM + kBeyondSlackM || top->z < -m.size.lengthM - kBeyondSlackM) {
     return makeError(who + ": its top " + where + " meets the ceiling beyond the corridor's (at x " +
                      std::to_string(top->x).substr(0, 5) + " m, z " + std::to_string(top->z).substr(0, 6) +
                      " m): draw the outline up to where the object hangs from this corridor's ceiling");
@@ -549,13 +558,12 @@ Result<StandingObject> standUp(const cv::Mat& photo, const Measurement& m, const
   }
   const cv::Rect box = cv::boundingRect(mask);
   const bool hanging = cutout.shape == metrology::CutoutShape::kHanging;
-  double outlineBottom = -1, outlineTop = 1e300;
-  for (const glm::dvec2& p : cutout.outlinePx) outlineBottom = std::max(outlineBottom, p.y), outlineTop = std::min(outlineTop, p.y);
-  if (hanging && (box.y <= 0 || outlineTop <= 0)) {
+  const OutlineRows outline = outlineRows(cutout);
+  if (hanging && (box.y <= 0 || outline.top <= 0)) {
     return makeError(who + ": it runs off the photo's top edge, so where it hangs from the ceiling is not in the photo "
                            "(remove the cutout, or outline only objects whose top shows)");
   }
-  if (!hanging && (box.y + box.height >= photo.rows || outlineBottom >= photo.rows - 1)) {
+  if (!hanging && (box.y + box.height >= photo.rows || outline.bottom >= photo.rows - 1)) {
     return makeError(who + ": it runs off the photo's bottom edge, so where it stands on the floor is not in the photo "
                            "(remove the cutout, or outline only objects whose foot shows)");
   }

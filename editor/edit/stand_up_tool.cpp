@@ -437,12 +437,7 @@ void EditMode::drawCutouts(app::Shell& shell) {
 std::optional<std::string> EditMode::leftPainted(const std::string& cutoutName) const {
   if (!doc_) return std::nullopt;
   const std::shared_ptr<const engine::Scene> built = preview_.fullSceneOf(doc_->modelShot());
-  if (!built) return std::nullopt;
-  const std::string prefix = "left painted: cutout \"" + cutoutName + "\": ";
-  for (const std::string& line : built->info) {
-    if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
-  }
-  return std::nullopt;
+  return built ? modeling::leftPaintedReason(*built, cutoutName) : std::nullopt;
 }
 
 void EditMode::addCutoutsTrace(app::TraceRow& row) const {

@@ -77,6 +77,16 @@ class StandUp : public ::testing::Test {
     }
     return std::nullopt;
   }
+  // `photowalk build` of the shot file NAME.json in the test's folder into NAME.wrl: the
+  // model's text ("" when the build failed, itself a failure).
+  static std::string builtModel(const std::string& name) {
+    const CommandRun built =
+        photowalk("build " + (dir_ / (name + ".json")).string() + " -o " + (dir_ / (name + ".wrl")).string());
+    EXPECT_EQ(built.exitCode, 0) << built.output;
+    if (built.exitCode != 0) return "";
+    std::ifstream model(dir_ / (name + ".wrl"));
+    return std::string((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  }
   static fs::path dir_;
 };
 fs::path StandUp::dir_;
@@ -159,10 +169,7 @@ TEST_F(StandUp, ARectangleAroundAPersonStandsHerUpUndoneRedoneNamedAndSaved) {
   // The saved copy stands her up in `build`: as tall as she is (1.945 m).
   const fs::path saved = dir_ / "named.json";
   ASSERT_TRUE(fs::exists(saved));
-  const CommandRun built = photowalk("build " + saved.string() + " -o " + (dir_ / "model.wrl").string());
-  ASSERT_EQ(built.exitCode, 0) << built.output;
-  std::ifstream model(dir_ / "model.wrl");
-  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  const std::string text = builtModel("named");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(text, m, std::regex("stood up: person \\([^)]*\\), a cut-out [0-9.]+ m wide and ([0-9.]+) m high")))
       << "no 'stood up' line in the model";
@@ -259,10 +266,7 @@ TEST_F(StandUp, ADoorwayClickedWithOOpensTheWall) {
   EXPECT_EQ(rows.at(24).raw.at("cutouts").size(), 0u) << "undone";
   EXPECT_NE(output.find("opening 1 opens the left wall: "), std::string::npos) << output;
 
-  const CommandRun built = photowalk("build " + (dir_ / "opened.json").string() + " -o " + (dir_ / "opened.wrl").string());
-  ASSERT_EQ(built.exitCode, 0) << built.output;
-  std::ifstream model(dir_ / "opened.wrl");
-  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  const std::string text = builtModel("opened");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(text, m, std::regex("opened: opening 1 \\([^)]*\\), an opening ([0-9.]+) m wide and ([0-9.]+) m high in the left wall")))
       << "no 'opened' line in the model";
@@ -327,7 +331,7 @@ TEST_F(StandUp, ALampAboveTheHorizonHangsFromTheCeiling) {
   Script s;
   s.key(3, "U");
   s.drag(5, a, b - a, 6);  // frames 5-12
-  s.at(14, "save-copy hung.json").at(16, "quit");
+  s.at(14, "save-copy hung.json").at(15, "capture hung.png").at(16, "quit");
   std::string output;
   const auto rows = edit("hang", s.str(), &output);
   ASSERT_GE(rows.size(), 15u);
@@ -335,10 +339,7 @@ TEST_F(StandUp, ALampAboveTheHorizonHangsFromTheCeiling) {
   ASSERT_EQ(cutouts.size(), 1u) << output;
   EXPECT_EQ(cutouts[0].at("shape"), "hanging") << cutouts.dump();
   EXPECT_NE(output.find("stood up object 1: it hangs from the ceiling"), std::string::npos) << output;
-  const CommandRun built = photowalk("build " + (dir_ / "hung.json").string() + " -o " + (dir_ / "hung.wrl").string());
-  ASSERT_EQ(built.exitCode, 0) << built.output;
-  std::ifstream model(dir_ / "hung.wrl");
-  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  const std::string text = builtModel("hung");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(text, m, std::regex("stood up: object 1 \\([^)]*\\), a cut-out [0-9.]+ m wide and ([0-9.]+) m high hanging from the ceiling")))
       << "no hanging line in the model";

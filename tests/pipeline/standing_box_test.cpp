@@ -49,6 +49,16 @@ std::pair<double, int> hitBox(const Cabinet& c, const glm::dvec3& o, const glm::
   return near <= far && near > 0 ? std::pair{near, axis} : std::pair{-1.0, -1};
 }
 
+// A corridor W x H x L metres seen straight down from 2 m before its near end, the eye
+// `eyeM` above the floor, in a 640 x 480 photo at 600 px.
+SyntheticCorridor straightCorridor(double widthM, double heightM, double lengthM, double eyeM) {
+  SyntheticCorridor c;
+  c.widthM = widthM, c.heightM = heightM, c.lengthM = lengthM;
+  c.cameraZM = 2.0, c.cameraHeightM = eyeM;
+  c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
+  return c;
+}
+
 // The corridor's photo, one ray a pixel, each pixel `colourOf` the ray's direction and
 // the corridor surface it meets.
 cv::Mat rayCastPhoto(const SyntheticCorridor& c,
@@ -303,10 +313,7 @@ TEST(StandingBoxes, WhatTheBoxLeavesOutOfItsObjectStaysPainted) {
 // camera its top row places it; 30 m down, where 4 px of that row move it metres, it is
 // left painted, by name, rather than hung metres off.
 TEST(HangingObjects, OneFarDownALowCorridorIsLeftPaintedByName) {
-  SyntheticCorridor c;
-  c.widthM = 2.0, c.heightM = 2.2, c.lengthM = 40;
-  c.cameraZM = 2.0, c.cameraHeightM = 1.7;
-  c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
+  const SyntheticCorridor c = straightCorridor(2.0, 2.2, 40, 1.7);
   const Cabinet nearSign{{-0.4, 1.7, -4.0}, {0.4, 2.2, -3.97}}, farSign{{-0.4, 1.7, -30.0}, {0.4, 2.2, -29.97}};
   const cv::Mat photo = rayCastPhoto(c, [&](const glm::dvec3& d, const metrology::testing::Hit& wall) {
     for (const Cabinet* sign : {&nearSign, &farSign}) {
@@ -345,10 +352,7 @@ TEST(HangingObjects, OneFarDownALowCorridorIsLeftPaintedByName) {
 // torso only, its lowest pixel far above her feet; the outline, drawn down to where she
 // stands, places her foot instead, within a pixel's worth of where she stands.
 TEST(StandingObjects, AnObjectWhoseFootGrabCutLosesStandsWhereItsOutlineEnds) {
-  SyntheticCorridor c;
-  c.widthM = 3.0, c.heightM = 2.8, c.lengthM = 20;
-  c.cameraZM = 2.0, c.cameraHeightM = 1.6;
-  c.imageWidth = 640, c.imageHeight = 480, c.focalPx = 600;
+  const SyntheticCorridor c = straightCorridor(3.0, 2.8, 20, 1.6);
   const Cabinet torso{{-0.25, 0.9, -6.0}, {0.25, 1.7, -5.8}}, legs{{-0.15, 0.0, -6.0}, {0.15, 0.9, -5.8}};
   const cv::Vec3b floorColour(120, 130, 140);
   const cv::Mat photo = rayCastPhoto(c, [&](const glm::dvec3& d, const metrology::testing::Hit& wall) {
