@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -71,6 +72,12 @@ constexpr double kEndBeyondSideOfSide = 0.3;
 constexpr double kEndDisagreePx = 5.0;
 // Two fits whose far walls are within this (pixels, worst corner) agree.
 constexpr double kAgreementPx = 2.0;
+// A corridor's end is no more than this many times as high as it is wide, nor as wide as
+// it is high: a passage 0.8 m wide is under 5 m high; a hall 15 m wide over 2.5 m.
+// Beyond it a "far wall" is a sliver between two edges (York Urban's P1040853, a door's
+// frame: 0.08; P1080092, a shelf's edge: 49). TUNE 0-599 (true 0.20-2.83): the right
+// answers 0.22-2.67; six wrong ones beyond (0.13-27).
+constexpr double kMaxFarWallAspect = 6.0;
 // Where the angular profile found no far wall, one of the box fit's next best boxes is
 // taken over its best with this much more support (and as many boundaries dividing
 // surfaces).
@@ -605,6 +612,13 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
         throughCorners.angle[b] = std::atan2(at[n].y - vp.y, at[n].x - vp.x);
       }
     }
+  }
+  if (const double aspect = farWallAspect(d); !(aspect <= kMaxFarWallAspect && aspect >= 1.0 / kMaxFarWallAspect)) {
+    const bool wide = aspect > 1;
+    char times[32];
+    std::snprintf(times, sizeof times, "%.1f", wide ? aspect : 1.0 / aspect);
+    return makeError(std::string("the far wall found would be ") + times + " times as " +
+                     (wide ? "wide as it is high" : "high as it is wide") + ": not a corridor's end");
   }
   const CrossSectionFamily nearFamily(s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
                                       throughCorners);
@@ -1395,6 +1409,19 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   if (!d->found) return d;
   for (CornerEstimate& corner : d->corners) corner.px = distortPixel(lens->lens, corner.px);
   return d;
+}
+
+double farWallAspect(const CorridorDetection& d) {
+  const glm::dvec3 h = d.corridor.point;
+  const glm::dvec3 along(h.x - d.principalPointPx.x * h.z, h.y - d.principalPointPx.y * h.z, d.focalPx * h.z);
+  std::array<glm::dvec3, 4> onPlane{};
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec3 ray((d.corners[k].px - d.principalPointPx) / d.focalPx, 1.0);
+    onPlane[k] = ray / glm::dot(along, ray);
+  }
+  const double width = glm::length(onPlane[P2] - onPlane[P1]) + glm::length(onPlane[P4] - onPlane[P3]);
+  const double height = glm::length(onPlane[P3] - onPlane[P1]) + glm::length(onPlane[P4] - onPlane[P2]);
+  return width / height;
 }
 
 std::optional<std::array<glm::dvec2, 8>> boxAlongVanishingPoints(const CorridorDetection& d, cv::Size size) {

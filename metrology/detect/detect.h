@@ -108,6 +108,12 @@ struct CorridorDetection {
 // P5..P8 without a marked cross-section, on fitted boundaries at the stated depth.
 Result<CorridorDetection> detectCorridor(const cv::Mat& photoBgr, const DetectOptions& options);
 
+// The far wall's (P1..P4) width over its height in the corridor: it stands square to the
+// corridor's direction, so its corners cast from the camera onto any plane square to that
+// direction (the focal length and principal point of `detection`) keep its shape.
+// Detection takes no far wall beyond 6 or under 1/6: a corridor's end is not a sliver.
+double farWallAspect(const CorridorDetection& detection);
+
 // A starting box for a person to drag where detection found the vanishing points but
 // no box: the far wall a rectangle around the corridor's vanishing point (a fifth of
 // the photo's short side), its sides pointing at the horizontal and vertical points,

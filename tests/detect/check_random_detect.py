@@ -72,13 +72,16 @@ RIGHT_PX = 2.0
 # top along the walls is taken at the band's foot: added 420 (an open end; 2.41 px before,
 # the feet on the side walls' skirting boards' tops). Since a hidden foot's floor boundaries
 # are taken at a board's foot too: added 500 (a person before the far wall's foot; 2.34 px
-# before, the foot on the boards' tops).
+# before, the foot on the boards' tops). Since a far wall is no more than 6 times as wide
+# as high, nor as high as wide (2026-12-06): 125 a wrong guess 84.6 px off -> "no
+# corridor" (its far wall 6.4 times as wide as high); added 166 (124 px before: a far wall
+# 27 times as wide as high, a shelf's edge across the corridor, won).
 EXPECTED = {
     1: (3, 0.680), 4: (0, 0.157), 6: (0, 0.251), 15: (3, 1.360), 31: (3, 2.260), 33: (3, 0.545), 40: (0, 0.100),
     44: (0, 0.798), 68: (3, 0.136), 70: (3, 0.185), 72: (3, 0.249), 84: (3, 0.183), 86: (0, 0.235), 94: (3, 0.164), 99: (0, 0.219),
-    103: (3, 0.203), 104: (3, 0.100), 110: (3, 0.701), 122: (3, 0.757), 125: (3, 84.590), 143: (3, 0.313), 144: (3, 1.089),
+    103: (3, 0.203), 104: (3, 0.100), 110: (3, 0.701), 122: (3, 0.757), 125: (2, None), 143: (3, 0.313), 144: (3, 1.089),
     205: (3, 0.369), 295: (3, 0.316), 402: (3, 0.716), 508: (0, 0.346), 85: (3, 0.446), 135: (3, 0.157), 495: (3, 1.300),
-    23: (3, 0.226), 50: (3, 0.543), 278: (3, 0.864), 420: (3, 1.163), 500: (3, 0.224),
+    23: (3, 0.226), 50: (3, 0.543), 278: (3, 0.864), 420: (3, 1.163), 500: (3, 0.224), 166: (3, 0.631),
 }
 # seed: (focal_source, error %) with the focal length withheld, measured 2026-12-04 (the
 # finite points refitted in the image, coarse to fine; the error before in brackets).
@@ -96,7 +99,7 @@ FOCAL_EXPECTED = {
     508: ("default", None), 85: ("vanishing_points", -2.03), 135: ("vanishing_points", 0.84),
     495: ("vanishing_points", 34.11), 23: ("default", None), 50: ("vanishing_points", -56.61),
     278: ("default", None), 420: ("vanishing_points", 2.40),
-    500: ("vanishing_points", -0.57),
+    500: ("vanishing_points", -0.57), 166: ("default", None),
 }
 
 

@@ -39,6 +39,42 @@ TEST(DetectSynthetic, TurnedCameraWithKnownFocal) {
   }
 }
 
+// The far wall's shape in the corridor from its corners in the photo: exact from the true
+// corners, within the corners' fit from detected ones.
+TEST(DetectSynthetic, TheFarWallsAspectIsTheCorridorsWidthOverItsHeight) {
+  CorridorSpec spec;
+  spec.yawDeg = 7, spec.pitchDeg = -5, spec.rollDeg = 3, spec.cameraXM = 0.4;
+  const auto scene = renderCorridor(spec);
+  const double truth = spec.corridorWidthM / spec.corridorHeightM;
+  DetectOptions options;
+  options.focalPx = spec.focalPx;
+  auto d = detectCorridor(scene.image, options);
+  ASSERT_TRUE(d.ok()) << d.message();
+  ASSERT_TRUE(d->found) << d->notFoundReason;
+  EXPECT_NEAR(farWallAspect(*d), truth, 0.005 * truth);  // measured 2026-12-06: 0.857 against 0.857
+  CorridorDetection exact = *d;
+  exact.principalPointPx = scene.principalPoint;
+  exact.corridor.point = glm::dvec3(scene.vanishingPoint, 1.0);
+  for (int k = 0; k < 4; ++k) exact.corners[k].px = scene.farWall[k];
+  EXPECT_NEAR(farWallAspect(exact), truth, 1e-9 * truth);
+}
+
+// A slot seven times as high as it is wide is no corridor's end (a door's frame, the gap
+// between two shelves): detection says so rather than taking it.
+TEST(DetectSynthetic, ASlotSevenTimesAsHighAsWideIsNoCorridor) {
+  CorridorSpec spec;
+  spec.corridorWidthM = 0.4;
+  spec.corridorHeightM = 2.8;
+  spec.yawDeg = 3;
+  const auto scene = renderCorridor(spec);
+  DetectOptions options;
+  options.focalPx = spec.focalPx;
+  auto d = detectCorridor(scene.image, options);
+  ASSERT_TRUE(d.ok()) << d.message();
+  EXPECT_FALSE(d->found) << "far wall " << farWallAspect(*d) << " times as wide as high";
+  EXPECT_NE(d->notFoundReason.find("not a corridor's end"), std::string::npos) << d->notFoundReason;
+}
+
 TEST(DetectSynthetic, FocalFromSecondFiniteVanishingPoint) {
   CorridorSpec spec;
   spec.yawDeg = 12, spec.pitchDeg = -8, spec.rollDeg = 3, spec.cameraXM = -0.4;
