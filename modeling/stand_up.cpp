@@ -616,6 +616,20 @@ const CutOuts& CutOutCache::get(const cv::Mat& photo, const std::vector<std::vec
   return entries_.back().cut;
 }
 
+const cv::Mat& CutOutCache::behindStood(const std::vector<bool>& stood, const std::function<cv::Mat()>& fill) {
+  auto& fills = entries_.back().stoodFills;
+  for (auto it = fills.begin(); it != fills.end(); ++it) {
+    if (it->first == stood) {
+      std::rotate(it, it + 1, fills.end());
+      return fills.back().second;
+    }
+  }
+  if (fills.size() >= kStoodFills) fills.erase(fills.begin());
+  fills.emplace_back(stood, fill());
+  ++made_;
+  return fills.back().second;
+}
+
 Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurement,
                                const std::vector<metrology::Cutout>& cutouts, CutOutCache* cache, StandUpParts parts) {
   if (photo.empty() || photo.type() != CV_8UC3) return makeError("standing objects up needs an 8-bit colour photo");
@@ -653,6 +667,7 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
   const CutOuts& cut = cached ? cache->get(photo, outlines, make) : (made = make());
   StoodUp out;
   std::vector<cv::Mat> masks;  // the stood objects', in out.objects' order
+  std::vector<bool> stood(cutouts.size(), false);
   for (size_t i = 0; i < cutouts.size(); ++i) {
     auto object = standUp(photo, measurement, cutouts[i], cut.masks[i]);
     if (!object) {
@@ -661,10 +676,15 @@ Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurem
     }
     out.objects.push_back(std::move(*object));
     masks.push_back(cut.masks[i]);
+    stood[i] = true;
   }
-  // Those left painted keep the photo's pixels: filled only about the others (rarely:
-  // not kept in the cache, which knows outlines, not what stood).
-  out.behind = out.leftPainted.empty() || cut.behind.empty() ? cut.behind : fillBehind(masks);
+  // Those left painted keep the photo's pixels: filled only about the others.
+  if (out.leftPainted.empty() || cut.behind.empty()) {
+    out.behind = cut.behind;
+  } else {
+    const auto fill = [&] { return fillBehind(masks); };
+    out.behind = cached ? cache->behindStood(stood, fill) : fill();
+  }
   // A box's outline need not hold every pixel of its object (a box is not the object's
   // exact shape): those it leaves out, and those along its edge, stay painted where the
   // photo shows them, not filled, so that from the photo's camera the model still gives

@@ -346,6 +346,16 @@ TEST(HangingObjects, OneFarDownALowCorridorIsLeftPaintedByName) {
   ASSERT_EQ(both->objects.size(), 1u);
   EXPECT_EQ(both->objects[0].name, "near sign");
   EXPECT_EQ(both->leftPainted.size(), 1u);
+  // The editor's preview, rebuilt as a corner moves: the fill about the near one alone is
+  // made once and kept, as GrabCut's masks are.
+  CutOutCache cache;
+  for (int step = 0; step < 3; ++step) {
+    auto rebuilt = standUpObjects(photo, *m, {outline(nearSign, "near sign"), outline(farSign, "far sign")}, &cache);
+    ASSERT_TRUE(rebuilt.ok()) << rebuilt.message();
+    EXPECT_EQ(rebuilt->leftPainted.size(), 1u);
+    EXPECT_EQ(cv::norm(rebuilt->behind, both->behind, cv::NORM_INF), 0.0) << "step " << step;
+  }
+  EXPECT_EQ(cache.made(), 2) << "GrabCut and the fill about all once, the fill about the near sign once";
 }
 
 // A person whose legs are the floor's colour (TUNE seed 71's trouble): GrabCut keeps her
