@@ -203,14 +203,14 @@ Result<Foot> footOf(const Measurement& m, const metrology::Cutout& cutout, const
   const OutlineRows outline = outlineRows(cutout);
   if (outline.bottom - footPx.y > std::max(kLostFootPx, kLostFootShare * (outline.bottom - outline.top))) footPx.y = outline.bottom;
   const std::optional<glm::dvec3> foot = onPlane(m, footPx, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+  const std::string where =
+      "(" + std::to_string(std::lround(footPx.x)) + ", " + std::to_string(static_cast<int>(std::floor(footPx.y))) + ")";
   if (!foot || glm::length(*foot - m.pose.positionM) > 1e4) {
-    return makeError(who + ": its lowest pixel (" + std::to_string(std::lround(footPx.x)) + ", " +
-                     std::to_string(static_cast<int>(std::floor(footPx.y))) +
-                     ") is on or above the horizon: draw the outline down to where the object stands on the floor");
+    return makeError(who + ": its lowest pixel " + where +
+                     " is on or above the horizon: draw the outline down to where the object stands on the floor");
   }
   if (std::abs(foot->x) > 0.5 * m.size.widthM + kBeyondSlackM || foot->z < -m.size.lengthM - kBeyondSlackM) {
-    return makeError(who + ": its lowest pixel found (" + std::to_string(std::lround(footPx.x)) + ", " +
-                     std::to_string(static_cast<int>(std::floor(footPx.y))) + ") meets the floor beyond the corridor's (at x " +
+    return makeError(who + ": its lowest pixel found " + where + " meets the floor beyond the corridor's (at x " +
                      std::to_string(foot->x).substr(0, 5) + " m, z " + std::to_string(foot->z).substr(0, 6) +
                      " m): draw the outline down to where the object stands on this corridor's floor");
   }
@@ -601,33 +601,43 @@ std::optional<glm::dvec3> onPlane(const Measurement& m, glm::dvec2 photoPx, glm:
   return m.pose.positionM + t * ray;
 }
 
+namespace {
+
+// The entry of `entries` (most recent last) that `matches`, made the most recent; else the
+// one `make` returns, added last, the oldest dropped beyond `capacity`. `made` counts the
+// entries made.
+template <class Entry, class Matches, class Make>
+Entry& mostRecent(std::vector<Entry>& entries, size_t capacity, const Matches& matches, const Make& make, int& made) {
+  for (auto it = entries.begin(); it != entries.end(); ++it) {
+    if (matches(*it)) {
+      std::rotate(it, it + 1, entries.end());
+      return entries.back();
+    }
+  }
+  if (entries.size() >= capacity) entries.erase(entries.begin());
+  entries.push_back(make());
+  ++made;
+  return entries.back();
+}
+
+}  // namespace
+
 const CutOuts& CutOutCache::get(const cv::Mat& photo, const std::vector<std::vector<cv::Point>>& outlines,
                                 const std::function<CutOuts()>& make) {
   const cv::Scalar sums = cv::sum(photo);
-  for (auto it = entries_.begin(); it != entries_.end(); ++it) {
-    if (it->data == photo.data && it->size == photo.size() && it->sums == sums && it->outlines == outlines) {
-      std::rotate(it, it + 1, entries_.end());  // the most recent last
-      return entries_.back().cut;
-    }
-  }
-  if (entries_.size() >= kEntries) entries_.erase(entries_.begin());
-  entries_.push_back({photo.data, photo.size(), sums, outlines, make()});
-  ++made_;
-  return entries_.back().cut;
+  const auto matches = [&](const Entry& e) {
+    return e.data == photo.data && e.size == photo.size() && e.sums == sums && e.outlines == outlines;
+  };
+  return mostRecent(entries_, kEntries, matches, [&] { return Entry{photo.data, photo.size(), sums, outlines, make(), {}}; },
+                    made_)
+      .cut;
 }
 
 const cv::Mat& CutOutCache::behindStood(const std::vector<bool>& stood, const std::function<cv::Mat()>& fill) {
-  auto& fills = entries_.back().stoodFills;
-  for (auto it = fills.begin(); it != fills.end(); ++it) {
-    if (it->first == stood) {
-      std::rotate(it, it + 1, fills.end());
-      return fills.back().second;
-    }
-  }
-  if (fills.size() >= kStoodFills) fills.erase(fills.begin());
-  fills.emplace_back(stood, fill());
-  ++made_;
-  return fills.back().second;
+  using StoodFill = std::pair<std::vector<bool>, cv::Mat>;
+  return mostRecent(entries_.back().stoodFills, kStoodFills, [&](const StoodFill& f) { return f.first == stood; },
+                    [&] { return StoodFill{stood, fill()}; }, made_)
+      .second;
 }
 
 Result<StoodUp> standUpObjects(const cv::Mat& photo, const Measurement& measurement,
