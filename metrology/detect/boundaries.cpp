@@ -31,6 +31,11 @@ constexpr double kMinContrast = 1.0;
 // taken for the ceiling's edge lay 44 degrees from where the other three put it).
 constexpr size_t kBoundaryCandidates = 3;
 constexpr double kBoxAgreementDeg = 8.0;
+// RecedingBoundaries::alternatives: at least this share of the summed step strength of
+// the set taken (TUNE 0-599, the alternatives whose far wall findCorridor took: those
+// that made a right answer wrong had 0.26-0.78 of it but two, those that made a wrong
+// one right 0.79-1.0).
+constexpr double kAlternativeStrengthShare = 0.8;
 
 // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49-style minimax polynomial),
 // several times cheaper than std::atan2 over a million pixels.
@@ -264,6 +269,12 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
   }
   // The strongest steps, unless they do not make a box and another set of them does.
   std::array<int, kBoundaryCount> pick{};
+  std::vector<std::pair<double, std::array<int, kBoundaryCount>>> boxes;  // every set that makes a box, with its strength
+  const auto strengthOf = [&](const std::array<int, kBoundaryCount>& choice) {
+    double strength = 0;
+    for (int b = 0; b < kBoundaryCount; ++b) strength += peaks[b][choice[b]].first;
+    return strength;
+  };
   if (sectionPoints) {
     const auto [horizontal, vertical] = *sectionPoints;
     const auto agreement = [&](const std::array<int, kBoundaryCount>& choice) {
@@ -278,15 +289,14 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
       return worst;
     };
     const double agree = kBoxAgreementDeg * kPi / 180;
-    if (missing < 0 && agreement(pick) > agree) {
-      double bestStrength = -1;
+    if (missing < 0) {
       std::array<int, kBoundaryCount> counts{};
       for (int b = 0; b < kBoundaryCount; ++b) counts[b] = static_cast<int>(peaks[b].size());
       forEachChoice(counts, [&](const std::array<int, kBoundaryCount>& c) {
-        double strength = 0;
-        for (int b = 0; b < kBoundaryCount; ++b) strength += peaks[b][c[b]].first;
-        if (strength > bestStrength && agreement(c) <= agree) bestStrength = strength, pick = c;
+        if (agreement(c) <= agree) boxes.push_back({strengthOf(c), c});
       });
+      std::stable_sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+      if (agreement(pick) > agree && !boxes.empty()) pick = boxes.front().second;
     }
   }
   RecedingBoundaries out;
@@ -319,6 +329,19 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
       if (out.edgeCoverage[b] < kMinBoundaryEdgeCoverage) edgeless = b, ++count;
     }
     if (count == 1) imply(edgeless);
+  }
+  // (boxes is empty where a quadrant showed no step: `pick` has no strength then.)
+  for (const auto& [strength, choice] : boxes) {
+    if (choice == pick || strength < kAlternativeStrengthShare * strengthOf(pick)) continue;
+    RecedingBoundaries alternative;
+    bool edges = true;
+    for (int b = 0; b < kBoundaryCount && edges; ++b) {
+      alternative.angle[b] = sharpestStepAngle(profile, peaks[b][choice[b]].second, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
+      alternative.contrast[b] = peaks[b][choice[b]].first;
+      alternative.edgeCoverage[b] = rayEdgeCoverage(image, vp, alternative.angle[b]);
+      edges = alternative.edgeCoverage[b] >= kMinBoundaryEdgeCoverage;
+    }
+    if (edges) out.alternatives.push_back(std::move(alternative));
   }
   return out;
 }

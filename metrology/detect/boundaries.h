@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -36,6 +37,12 @@ struct RecedingBoundaries {
   int implied = -1;
   // Taken at the outer edge of a band along the walls (a skirting board's foot).
   std::array<bool, kBoundaryCount> belowBand{};
+  // The other sets of each quadrant's few strongest steps that make a box, strongest
+  // first (findRecedingBoundaries; only where all four were found): a person's outline
+  // or a side opening's edge can make the strongest set a wrong box and the true one a
+  // close second. Each nearly as strong as the set taken (kAlternativeStrengthShare of
+  // its summed step strength) and with an edge along each of its four rays.
+  std::vector<RecedingBoundaries> alternatives;
 
   glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }
 };

@@ -35,6 +35,10 @@ constexpr double kMaxCorridorRmsAngleDeg = 2.0;
 constexpr double kMaxLooseCorridorRmsAngleDeg = 3.0;
 // Each far-wall side must be an edge over this share of its middle stretch.
 constexpr double kMinFarSideCoverage = 0.3;
+// Boundaries other than the angular profile's strongest set (RecedingBoundaries::
+// alternatives) are taken where their far wall scores this much more (findFarWall's
+// score: the sides' edge coverage and how the boundaries run on beyond the corners).
+constexpr double kAlternativeFarWallGain = 0.1;
 // A sure answer: the far wall's top and sides seen along most of their length, its
 // foot (which clutter hides first) along half, and at least three of the four
 // boundaries running on from its corners.
@@ -1174,6 +1178,24 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     const CrossSectionFamily family(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
                                     *boundaries);
     auto farWall = findFarWall(work, family);
+    // Where the strongest set finds no far wall, or one with a side hidden, its boundaries
+    // may be a wrong box's (a person's outline before the far wall's corners) and a nearly
+    // as strong set the true one: each (strongest first) is taken where its far wall scores
+    // clearly better, or where the strongest set's found none. Not where the strongest set
+    // found all four sides: there a far wall along a cabinet's or a band's edges can score
+    // better than the true one (DetectParts.RoomBoxFindsTheFarWallBehindClutter, the
+    // project's clutter_5; see docs/detection-accuracy.md for the TUNE figures).
+    // (Over a copy: taking one replaces *boundaries, its list with it.)
+    const bool doubtful = !farWall || farWall->hiddenSide >= 0;
+    for (const RecedingBoundaries& alternative : doubtful ? std::vector(boundaries->alternatives) : std::vector<RecedingBoundaries>{}) {
+      const CrossSectionFamily other(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
+                                     alternative);
+      auto wall = findFarWall(work, other);
+      if (wall && (!farWall || wall->score > farWall->score + kAlternativeFarWallGain)) {
+        farWall = std::move(wall);
+        *boundaries = alternative;
+      }
+    }
     const bool thin = farWall && farWall->score < kClearFarWallScore;
     const std::string thinly = thin ? "the far wall's sides and the boundaries beyond it are seen thinly (score " +
                                           std::to_string(farWall->score).substr(0, 4) + ")"
