@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
 #include <vector>
 
 #include "metrology/detect/geometry.h"
@@ -299,16 +301,24 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
       if (agreement(pick) > agree && !boxes.empty()) pick = boxes.front().second;
     }
   }
+  // Each step placed (the sharpest step near the coarse one: narrow windows are not
+  // misled by a texture line beside the boundary, a mortar joint one brick course below a
+  // ceiling, which only a gradient would prefer) and its ray's edge coverage, once per step:
+  // the alternatives below share them.
+  std::array<std::array<std::optional<std::pair<double, double>>, kBoundaryCandidates>, kBoundaryCount> placedSteps;
+  const auto placed = [&](int boundary, int i) {
+    auto& p = placedSteps[boundary][i];
+    if (!p) {
+      const double angle = sharpestStepAngle(profile, peaks[boundary][i].second, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
+      p.emplace(angle, rayEdgeCoverage(image, vp, angle));
+    }
+    return *p;  // angle, edge coverage
+  };
   RecedingBoundaries out;
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
     if (boundary == missing) continue;
-    const auto [strength, coarseBin] = peaks[boundary][pick[boundary]];
-    // Place it: the sharpest step near the coarse one. Narrow windows are not
-    // misled by a texture line beside the boundary (a mortar joint one brick
-    // course below a ceiling), which only a gradient would prefer.
-    out.angle[boundary] = sharpestStepAngle(profile, coarseBin, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
-    out.contrast[boundary] = strength;
-    out.edgeCoverage[boundary] = rayEdgeCoverage(image, vp, out.angle[boundary]);
+    std::tie(out.angle[boundary], out.edgeCoverage[boundary]) = placed(boundary, pick[boundary]);
+    out.contrast[boundary] = peaks[boundary][pick[boundary]].first;
   }
   // The one boundary that does not show, where the other three put it: its quadrant has
   // no step, or it is the only one with no edge along it (a floor's skirting hidden by
@@ -336,9 +346,8 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     RecedingBoundaries alternative;
     bool edges = true;
     for (int b = 0; b < kBoundaryCount && edges; ++b) {
-      alternative.angle[b] = sharpestStepAngle(profile, peaks[b][choice[b]].second, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
+      std::tie(alternative.angle[b], alternative.edgeCoverage[b]) = placed(b, choice[b]);
       alternative.contrast[b] = peaks[b][choice[b]].first;
-      alternative.edgeCoverage[b] = rayEdgeCoverage(image, vp, alternative.angle[b]);
       edges = alternative.edgeCoverage[b] >= kMinBoundaryEdgeCoverage;
     }
     if (edges) out.alternatives.push_back(std::move(alternative));

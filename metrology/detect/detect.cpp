@@ -1185,15 +1185,16 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     // found all four sides: there a far wall along a cabinet's or a band's edges can score
     // better than the true one (DetectParts.RoomBoxFindsTheFarWallBehindClutter, the
     // project's clutter_5; see docs/detection-accuracy.md for the TUNE figures).
-    // (Over a copy: taking one replaces *boundaries, its list with it.)
-    const bool doubtful = !farWall || farWall->hiddenSide >= 0;
-    for (const RecedingBoundaries& alternative : doubtful ? std::vector(boundaries->alternatives) : std::vector<RecedingBoundaries>{}) {
-      const CrossSectionFamily other(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
-                                     alternative);
-      auto wall = findFarWall(work, other);
-      if (wall && (!farWall || wall->score > farWall->score + kAlternativeFarWallGain)) {
-        farWall = std::move(wall);
-        *boundaries = alternative;
+    if (!farWall || farWall->hiddenSide >= 0) {
+      const std::vector<RecedingBoundaries> alternatives = std::move(boundaries->alternatives);  // taking one replaces *boundaries
+      for (const RecedingBoundaries& alternative : alternatives) {
+        const CrossSectionFamily other(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
+                                       alternative);
+        auto wall = findFarWall(work, other);
+        if (wall && (!farWall || wall->score > farWall->score + kAlternativeFarWallGain)) {
+          farWall = std::move(wall);
+          *boundaries = alternative;
+        }
       }
     }
     const bool thin = farWall && farWall->score < kClearFarWallScore;

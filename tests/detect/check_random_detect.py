@@ -77,7 +77,8 @@ RIGHT_PX = 2.0
 # corridor" (its far wall 6.4 times as wide as high); added 166 (124 px before: a far wall
 # 27 times as wide as high, a shelf's edge across the corridor, won). Since a nearly as
 # strong set of the angular profile's steps that makes a box is taken where its far wall
-# scores clearly better (2026-12-06): added 337 (a person before the far wall's left
+# scores clearly better, where the strongest set finds none or one with a side hidden
+# (2026-12-06): added 337 (a person before the far wall's left
 # corners; 10.7 px before, the left side on the person's outline) and 287 (a glazed end,
 # its foot's corners hidden; "no corridor" before).
 EXPECTED = {
