@@ -25,7 +25,7 @@ photowalk code), from the same numbers that place the POV-Ray camera:
   camera: worldFromCamera = Ry(yaw) Rx(pitch) Rz(roll) (columns right, up, back);
   pixel centres at integer coordinates, u right, v down.
 """
-import argparse, json, math, os, shutil, subprocess, sys, tempfile
+import argparse, json, math, os, shutil, subprocess, sys, tempfile, time
 
 # Materials. Each is a POV-Ray texture for a wall, floor or ceiling plane.
 MATERIALS = {
@@ -379,6 +379,24 @@ def write_if_changed(path, text):
     return True
 
 
+# POV-Ray 3.7's front end gives its render thread a few seconds to start and otherwise
+# exits 1 with this message: on a loaded machine (CI's two cores running the suite) it
+# happens now and then, and the same render started again succeeds.
+POVRAY_STARTUP_TIMEOUT = "Timed out waiting for worker thread startup"
+POVRAY_TRIES = 5
+
+
+def run_povray(cmd, cwd):
+    """subprocess.run of a povray command line, started again (up to POVRAY_TRIES times)
+    where povray's render thread did not start in time; the last run's CompletedProcess."""
+    for attempt in range(POVRAY_TRIES):
+        r = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True)
+        if r.returncode == 0 or POVRAY_STARTUP_TIMEOUT not in (r.stderr + r.stdout):
+            return r
+        time.sleep(0.5 * (attempt + 1))
+    return r
+
+
 def render(pov_path, png_path, size):
     """povray into a temporary file, renamed into place when it succeeded."""
     w, h = size
@@ -389,7 +407,7 @@ def render(pov_path, png_path, size):
     # same file renders to the same pixels every time); -D: no display.
     cmd = ["povray", "+I" + os.path.abspath(pov_path), "+O" + tmp, "+W%d" % w, "+H%d" % h, "-D", "+A0.3",
            "+FN8", "-GA", "+WT2"]
-    r = subprocess.run(cmd, cwd=out_dir, capture_output=True, text=True)
+    r = run_povray(cmd, out_dir)
     if r.returncode != 0 or os.path.getsize(tmp) == 0:
         os.unlink(tmp)
         sys.exit("make_corridors: povray failed on %s: %s" % (pov_path, (r.stderr or r.stdout).strip().splitlines()[-1:]))

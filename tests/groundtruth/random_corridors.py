@@ -54,7 +54,7 @@ import argparse, json, math, os, random, subprocess, sys, tempfile, time
 from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_corridors import Camera, CORNERS, PLANES  # noqa: E402  (the shared projection)
+from make_corridors import Camera, CORNERS, PLANES, run_povray  # noqa: E402  (the shared projection, povray)
 
 # Surface ids of the mask render (flat colours, see mask_rgb).
 SURFACE = {"left_wall": 1, "right_wall": 2, "floor": 3, "ceiling": 4, "far_end": 5, "beyond": 6, "hall": 7}
@@ -1008,7 +1008,7 @@ def povray(pov, out, size, extra, threads):
     os.close(fd)
     cmd = ["nice", "-n", "10", "povray", "+I" + os.path.abspath(pov), "+O" + tmp, "+W%d" % w, "+H%d" % h, "-D", "-GA",
            "+WT%d" % threads] + extra
-    r = subprocess.run(cmd, cwd=os.path.dirname(os.path.abspath(out)), capture_output=True, text=True)
+    r = run_povray(cmd, os.path.dirname(os.path.abspath(out)))
     if r.returncode != 0 or os.path.getsize(tmp) == 0:
         os.unlink(tmp)
         raise RuntimeError("povray failed on %s: %s" % (pov, (r.stderr or r.stdout).strip().splitlines()[-3:]))
