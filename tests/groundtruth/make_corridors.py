@@ -386,14 +386,16 @@ POVRAY_STARTUP_TIMEOUT = "Timed out waiting for worker thread startup"
 POVRAY_TRIES = 5
 
 
-def run_povray(cmd, cwd):
-    """subprocess.run of a povray command line, started again (up to POVRAY_TRIES times)
-    where povray's render thread did not start in time; the last run's CompletedProcess."""
-    for attempt in range(POVRAY_TRIES):
+def run_povray(cmd, cwd, tries=POVRAY_TRIES, pause_s=0.5):
+    """subprocess.run of a povray command line, started again (up to `tries` times, waiting
+    pause_s, then twice that, ...) where povray's render thread did not start in time; the
+    last run's CompletedProcess. (tests/groundtruth/check_povray_retry.py)"""
+    for attempt in range(tries):
         r = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True)
         if r.returncode == 0 or POVRAY_STARTUP_TIMEOUT not in (r.stderr + r.stdout):
             return r
-        time.sleep(0.5 * (attempt + 1))
+        if attempt + 1 < tries:
+            time.sleep(pause_s * (attempt + 1))
     return r
 
 
