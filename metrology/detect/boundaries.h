@@ -40,8 +40,8 @@ struct RecedingBoundaries {
   // The other sets of each quadrant's few strongest steps that make a box, strongest
   // first (findRecedingBoundaries; only where all four were found): a person's outline
   // or a side opening's edge can make the strongest set a wrong box and the true one a
-  // close second. Each nearly as strong as the set taken (kAlternativeStrengthShare of
-  // its summed step strength) and with an edge along each of its four rays.
+  // weaker one. Each with at least kAlternativeStrengthShare (0.6) of the set taken's
+  // summed step strength and an edge along each of its four rays.
   std::vector<RecedingBoundaries> alternatives;
 
   glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }

@@ -1179,8 +1179,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
                                     *boundaries);
     auto farWall = findFarWall(work, family);
     // Where the strongest set finds no far wall, or one with a side hidden, its boundaries
-    // may be a wrong box's (a person's outline before the far wall's corners) and a nearly
-    // as strong set the true one: each (strongest first) is taken where its far wall scores
+    // may be a wrong box's (a person's outline before the far wall's corners) and a weaker
+    // set the true one: each (strongest first) is taken where its far wall scores
     // clearly better, or where the strongest set's found none. Not where the strongest set
     // found all four sides: there a far wall along a cabinet's or a band's edges can score
     // better than the true one (DetectParts.RoomBoxFindsTheFarWallBehindClutter, the
