@@ -40,7 +40,7 @@ struct RecedingBoundaries {
   // The other sets of each quadrant's few strongest steps that make a box, strongest
   // first (findRecedingBoundaries; only where all four were found): a person's outline
   // or a side opening's edge can make the strongest set a wrong box and the true one a
-  // weaker one. Each with at least kAlternativeStrengthShare (0.6) of the set taken's
+  // weaker one. Each with at least kAlternativeStrengthShare of the set taken's
   // summed step strength and an edge along each of its four rays.
   std::vector<RecedingBoundaries> alternatives;
 
