@@ -1175,9 +1175,10 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     }
   }
   if (profileReason.empty()) {
-    const CrossSectionFamily family(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
-                                    *boundaries);
-    auto farWall = findFarWall(work, family);
+    const auto familyOf = [&](const RecedingBoundaries& rays) {
+      return CrossSectionFamily(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), rays);
+    };
+    auto farWall = findFarWall(work, familyOf(*boundaries));
     // Where the strongest set finds no far wall, or one with a side hidden, its boundaries
     // may be a wrong box's (a person's outline before the far wall's corners) and a weaker
     // set the true one: each (strongest first) is taken where its far wall scores
@@ -1188,9 +1189,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     if (!farWall || farWall->hiddenSide >= 0) {
       const std::vector<RecedingBoundaries> alternatives = std::move(boundaries->alternatives);  // taking one replaces *boundaries
       for (const RecedingBoundaries& alternative : alternatives) {
-        const CrossSectionFamily other(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point),
-                                       alternative);
-        auto wall = findFarWall(work, other);
+        auto wall = findFarWall(work, familyOf(alternative));
         if (wall && (!farWall || wall->score > farWall->score + kAlternativeFarWallGain)) {
           farWall = std::move(wall);
           *boundaries = alternative;
