@@ -26,21 +26,31 @@ constexpr double kBandMinDeg = 0.3, kBandMaxDeg = 4.0, kBandStepShare = 0.3, kBa
 constexpr int kBandPlaces = 8;
 constexpr double kQuadrantMarginDeg = 3.0;
 constexpr double kMinContrast = 1.0;
-// Each quadrant's strongest steps tried together when its strongest do not make a box,
+// Each quadrant's strongest steps tried together when its heaviest do not make a box,
 // and how far (degrees) a boundary may lie from where the other three put it (TUNE
 // 0-599: 5 and 6 gained 11 and 9 clean answers but made a wrong answer sure; 8 gained
 // 6 clean, 5 noisy, with no wrong sure answer; 12 gained 3 and 3. TUNE 112: a lamp row
 // taken for the ceiling's edge lay 44 degrees from where the other three put it).
 constexpr size_t kBoundaryCandidates = 3;
 constexpr double kBoxAgreementDeg = 8.0;
-// RecedingBoundaries::alternatives: at least this share of the summed step strength of
-// the set taken. Tried wherever the strongest set's far wall scored lower (stop 49), the
-// alternatives that made a right answer wrong had 0.26-0.78 of it but two, those that
-// made a wrong one right 0.79-1.0; findCorridor tries them only where the strongest set
-// finds no far wall or one with a side hidden, and there weaker ones do no harm: TUNE
-// 0-599, 0.8 -> 0.6: +1/-0 clean (198), +1/-0 noisy (476), "no corridor" with the box in
-// view 32 -> 29 clean; 0.5 the same as 0.6, 0.7 +1/-0 and 31.
-constexpr double kAlternativeStrengthShare = 0.6;
+// A quadrant's steps whose rays show an edge along less than this share of their outer
+// half weigh their strength times that share, the others their strength (the heaviest
+// step is the boundary). TUNE 0-599 against strength alone: +3/-0 clean (361, 380,
+// 561), +1/-0 noisy (458), "no corridor" with the box in view 29 -> 27 and 31 -> 29.
+// Every step weighed by its coverage (a share of 1): +4/-0 and +2/-1, but the project's
+// clutter_6 lost its floor-left boundary to a step edged all along 20 degrees off (its true
+// one is not among the steps; the half-edged one taken before, 4 degrees off, was mended
+// by the later fits).
+constexpr double kFullWeightCoverage = 0.5;
+// RecedingBoundaries::alternatives: at least this share of the summed weight of the set
+// taken (kFullWeightCoverage; before stop 51, the summed strength). Tried wherever the set
+// taken's far wall scored lower (stop 49), the alternatives that made a right answer wrong
+// had 0.26-0.78 of it but two, those that made a wrong one right 0.79-1.0; findCorridor
+// tries them only where the set taken finds no far wall or one with a side hidden, and
+// there weaker ones do no harm: TUNE 0-599, 0.8 -> 0.6: +1/-0 clean (198), +1/-0 noisy
+// (476), "no corridor" with the box in view 32 -> 29 clean; 0.5 the same as 0.6, 0.7
+// +1/-0 and 31.
+constexpr double kAlternativeWeightShare = 0.6;
 
 // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49-style minimax polynomial),
 // several times cheaper than std::atan2 over a million pixels.
@@ -272,13 +282,40 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     std::sort(peaks[boundary].begin() + 1, peaks[boundary].end(), std::greater<>());
     if (peaks[boundary].size() > kBoundaryCandidates) peaks[boundary].resize(kBoundaryCandidates);
   }
-  // The strongest steps, unless they do not make a box and another set of them does.
+  // Each step placed (the sharpest step near the coarse one: narrow windows are not
+  // misled by a texture line beside the boundary, a mortar joint one brick course below a
+  // ceiling, which only a gradient would prefer) and its ray's edge coverage, once per step:
+  // the weights and the alternatives below share them.
+  std::array<std::array<std::optional<std::pair<double, double>>, kBoundaryCandidates>, kBoundaryCount> placedSteps;
+  const auto placed = [&](int boundary, int i) {
+    auto& p = placedSteps[boundary][i];
+    if (!p) {
+      const double angle = sharpestStepAngle(profile, peaks[boundary][i].second, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
+      p.emplace(angle, rayEdgeCoverage(image, vp, angle));
+    }
+    return *p;  // angle, edge coverage
+  };
+  // A step whose ray shows an edge along less than kFullWeightCoverage of its outer half
+  // weighs its strength times that share: a wall meeting the floor or the ceiling is an
+  // edge all along, while a row of lamps along the ceiling or a wall's shading steps the
+  // profile's colour with little edge along it.
+  const auto weightOf = [&](int boundary, int i) {
+    const double coverage = placed(boundary, i).second;
+    return peaks[boundary][i].first * (coverage >= kFullWeightCoverage ? 1.0 : coverage);
+  };
+  // The heaviest steps, unless they do not make a box and another set of them does.
   std::array<int, kBoundaryCount> pick{};
-  std::vector<std::pair<double, std::array<int, kBoundaryCount>>> boxes;  // every set that makes a box, with its strength
-  const auto strengthOf = [&](const std::array<int, kBoundaryCount>& choice) {
-    double strength = 0;
-    for (int b = 0; b < kBoundaryCount; ++b) strength += peaks[b][choice[b]].first;
-    return strength;
+  for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
+    if (boundary == missing) continue;
+    for (int i = 1; i < static_cast<int>(peaks[boundary].size()); ++i) {
+      if (weightOf(boundary, i) > weightOf(boundary, pick[boundary])) pick[boundary] = i;
+    }
+  }
+  std::vector<std::pair<double, std::array<int, kBoundaryCount>>> boxes;  // every set that makes a box, with its weight
+  const auto weightOfSet = [&](const std::array<int, kBoundaryCount>& choice) {
+    double weight = 0;
+    for (int b = 0; b < kBoundaryCount; ++b) weight += weightOf(b, choice[b]);
+    return weight;
   };
   if (sectionPoints) {
     const auto [horizontal, vertical] = *sectionPoints;
@@ -298,25 +335,12 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
       std::array<int, kBoundaryCount> counts{};
       for (int b = 0; b < kBoundaryCount; ++b) counts[b] = static_cast<int>(peaks[b].size());
       forEachChoice(counts, [&](const std::array<int, kBoundaryCount>& c) {
-        if (agreement(c) <= agree) boxes.push_back({strengthOf(c), c});
+        if (agreement(c) <= agree) boxes.push_back({weightOfSet(c), c});
       });
       std::stable_sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
       if (agreement(pick) > agree && !boxes.empty()) pick = boxes.front().second;
     }
   }
-  // Each step placed (the sharpest step near the coarse one: narrow windows are not
-  // misled by a texture line beside the boundary, a mortar joint one brick course below a
-  // ceiling, which only a gradient would prefer) and its ray's edge coverage, once per step:
-  // the alternatives below share them.
-  std::array<std::array<std::optional<std::pair<double, double>>, kBoundaryCandidates>, kBoundaryCount> placedSteps;
-  const auto placed = [&](int boundary, int i) {
-    auto& p = placedSteps[boundary][i];
-    if (!p) {
-      const double angle = sharpestStepAngle(profile, peaks[boundary][i].second, static_cast<int>(kFineRangeDeg / 360.0 * kBins));
-      p.emplace(angle, rayEdgeCoverage(image, vp, angle));
-    }
-    return *p;  // angle, edge coverage
-  };
   RecedingBoundaries out;
   for (int boundary = 0; boundary < kBoundaryCount; ++boundary) {
     if (boundary == missing) continue;
@@ -343,9 +367,9 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     }
     if (count == 1) imply(edgeless);
   }
-  // (boxes is empty where a quadrant showed no step: `pick` has no strength then.)
-  for (const auto& [strength, choice] : boxes) {
-    if (choice == pick || strength < kAlternativeStrengthShare * strengthOf(pick)) continue;
+  // (boxes is empty where a quadrant showed no step: `pick` has no weight then.)
+  for (const auto& [weight, choice] : boxes) {
+    if (choice == pick || weight < kAlternativeWeightShare * weightOfSet(pick)) continue;
     RecedingBoundaries alternative;
     bool edges = true;
     for (int b = 0; b < kBoundaryCount && edges; ++b) {

@@ -37,11 +37,12 @@ struct RecedingBoundaries {
   int implied = -1;
   // Taken at the outer edge of a band along the walls (a skirting board's foot).
   std::array<bool, kBoundaryCount> belowBand{};
-  // The other sets of each quadrant's few strongest steps that make a box, strongest
+  // The other sets of each quadrant's few strongest steps that make a box, heaviest
   // first (findRecedingBoundaries; only where all four were found): a person's outline
-  // or a side opening's edge can make the strongest set a wrong box and the true one a
-  // weaker one. Each with at least kAlternativeStrengthShare of the set taken's
-  // summed step strength and an edge along each of its four rays.
+  // or a side opening's edge can make the set taken a wrong box and the true one a
+  // lighter one. Each with at least kAlternativeWeightShare of the set taken's
+  // summed weight (each step's strength, times its ray's edge coverage where that is
+  // under half) and an edge along each of its four rays.
   std::vector<RecedingBoundaries> alternatives;
 
   glm::dvec2 direction(int boundary) const { return {std::cos(angle[boundary]), std::sin(angle[boundary])}; }
@@ -50,16 +51,18 @@ struct RecedingBoundaries {
 // Outside the far wall, a corridor photo is four angular sectors around the vanishing
 // point (floor, two walls, ceiling), and every ray from the point stays in one plane.
 // So the mean colour and texture along each ray (the "angular profile", texture
-// averaging out along the ray) is piecewise constant with four steps; the strongest
-// step in each quadrant (measured from the horizon) is a boundary, and its angle is
-// then sharpened to the ray that best follows an image edge.
+// averaging out along the ray) is piecewise constant with four steps. In each quadrant
+// (measured from the horizon) the few strongest steps are placed on the sharpest colour
+// step near them, and the boundary is the heaviest: its strength, times its ray's edge
+// coverage where an edge runs along less than half of it (a junction of two surfaces is
+// an edge all along, a row of lamps or a wall's shading is not).
 // `vanishingPoint` is in working pixels; `horizonAngle` is the direction of the
 // horizon (towards the horizontal vanishing point) in radians, pointing right.
 // With the horizontal and vertical points (`sectionPoints`, homogeneous, working pixels),
 // the four are taken together: a box's cross-section is a rectangle whose top and bottom
 // point at the one and sides at the other, so any three boundaries fix the fourth, and
-// where the strongest steps disagree with that (a lamp row along the ceiling passing for
-// its edge with a wall), the strongest set among each quadrant's few strongest steps
+// where the steps taken disagree with that (a lamp row along the ceiling passing for
+// its edge with a wall), the heaviest set among each quadrant's few strongest steps
 // that agrees is taken; and one boundary that does not show (no step in its quadrant,
 // or the only one with no edge along it) is where the other three put it (`implied`).
 Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm::dvec2 vanishingPoint,

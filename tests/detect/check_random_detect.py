@@ -82,14 +82,19 @@ RIGHT_PX = 2.0
 # corners; 10.7 px before, the left side on the person's outline) and 287 (a glazed end,
 # its foot's corners hidden; "no corridor" before). Since such sets need only 0.6 of the
 # strongest set's strength, not 0.8 (stop 50): added 198 (39.3 px before: its far wall's
-# foot hidden, the strongest set's far wall a wrong one).
+# foot hidden, the strongest set's far wall a wrong one). Since a quadrant's steps with an
+# edge along less than half their ray are weighed by that share (stop 51): added 361 (77.5
+# px before: its floor-right boundary on a step with edges along 33% of its ray, the true
+# one 99%), 380 (11.1 px before: its ceiling-right boundary the same, 27% against 70%) and
+# 561 (9.6 px before: its floor-left boundary on a step with edges along 25% of its ray).
 EXPECTED = {
     1: (3, 0.680), 4: (0, 0.157), 6: (0, 0.251), 15: (3, 1.360), 31: (3, 2.260), 33: (3, 0.545), 40: (0, 0.100),
     44: (0, 0.798), 68: (3, 0.136), 70: (3, 0.185), 72: (3, 0.249), 84: (3, 0.183), 86: (0, 0.235), 94: (3, 0.164), 99: (0, 0.219),
     103: (3, 0.203), 104: (3, 0.100), 110: (3, 0.701), 122: (3, 0.757), 125: (2, None), 143: (3, 0.313), 144: (3, 1.089),
     205: (3, 0.369), 295: (3, 0.316), 402: (3, 0.716), 508: (0, 0.346), 85: (3, 0.446), 135: (3, 0.157), 495: (3, 1.300),
     23: (3, 0.226), 50: (3, 0.543), 278: (3, 0.864), 420: (3, 1.163), 500: (3, 0.224), 166: (3, 0.631),
-    337: (3, 0.580), 287: (3, 0.420), 198: (3, 0.126),
+    337: (3, 0.580), 287: (3, 0.420), 198: (3, 0.126), 361: (3, 0.982), 380: (3, 0.779),
+    561: (3, 0.214),
 }
 # seed: (focal_source, error %) with the focal length withheld, measured 2026-12-04 (the
 # finite points refitted in the image, coarse to fine; the error before in brackets).
@@ -108,7 +113,8 @@ FOCAL_EXPECTED = {
     495: ("vanishing_points", 34.11), 23: ("default", None), 50: ("vanishing_points", -56.61),
     278: ("default", None), 420: ("vanishing_points", 2.40),
     500: ("vanishing_points", -0.57), 166: ("default", None), 337: ("vanishing_points", -2.37),
-    287: ("vanishing_points", -1.84), 198: ("default", None),
+    287: ("vanishing_points", -1.84), 198: ("default", None), 361: ("default", None),
+    380: ("vanishing_points", -11.22), 561: ("vanishing_points", -0.15),
 }
 
 
