@@ -43,13 +43,13 @@ constexpr double kBoxAgreementDeg = 8.0;
 // by the later fits).
 constexpr double kFullWeightCoverage = 0.5;
 // RecedingBoundaries::alternatives: at least this share of the summed weight of the set
-// taken (kFullWeightCoverage; before stop 51, the summed strength). Tried wherever the set
-// taken's far wall scored lower (stop 49), the alternatives that made a right answer wrong
-// had 0.26-0.78 of it but two, those that made a wrong one right 0.79-1.0; findCorridor
-// tries them only where the set taken finds no far wall or one with a side hidden, and
-// there weaker ones do no harm: TUNE 0-599, 0.8 -> 0.6: +1/-0 clean (198), +1/-0 noisy
-// (476), "no corridor" with the box in view 32 -> 29 clean; 0.5 the same as 0.6, 0.7
-// +1/-0 and 31.
+// taken (each step weighed as kFullWeightCoverage says; before stop 51, the summed
+// strength). Tried wherever the set taken's far wall scored lower (stop 49), the
+// alternatives that made a right answer wrong had 0.26-0.78 of it but two, those that
+// made a wrong one right 0.79-1.0; findCorridor tries them only where the set taken
+// finds no far wall or one with a side hidden, and there weaker ones do no harm: TUNE
+// 0-599, 0.8 -> 0.6: +1/-0 clean (198), +1/-0 noisy (476), "no corridor" with the box
+// in view 32 -> 29 clean; 0.5 the same as 0.6, 0.7 +1/-0 and 31.
 constexpr double kAlternativeWeightShare = 0.6;
 
 // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49-style minimax polynomial),
