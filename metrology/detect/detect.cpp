@@ -35,7 +35,7 @@ constexpr double kMaxCorridorRmsAngleDeg = 2.0;
 constexpr double kMaxLooseCorridorRmsAngleDeg = 3.0;
 // Each far-wall side must be an edge over this share of its middle stretch.
 constexpr double kMinFarSideCoverage = 0.3;
-// Boundaries other than the angular profile's strongest set (RecedingBoundaries::
+// Boundaries other than the set the angular profile took (RecedingBoundaries::
 // alternatives) are taken where their far wall scores this much more (findFarWall's
 // score: the sides' edge coverage and how the boundaries run on beyond the corners).
 constexpr double kAlternativeFarWallGain = 0.1;
@@ -1179,10 +1179,10 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
       return CrossSectionFamily(search.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), rays);
     };
     auto farWall = findFarWall(work, familyOf(*boundaries));
-    // Where the strongest set finds no far wall, or one with a side hidden, its boundaries
-    // may be a wrong box's (a person's outline before the far wall's corners) and a weaker
-    // set the true one: each (strongest first) is taken where its far wall scores
-    // clearly better, or where the strongest set's found none. Not where the strongest set
+    // Where the set taken finds no far wall, or one with a side hidden, its boundaries
+    // may be a wrong box's (a person's outline before the far wall's corners) and a lighter
+    // set the true one: each (heaviest first) is taken where its far wall scores
+    // clearly better, or where the set taken found none. Not where the set taken
     // found all four sides: there a far wall along a cabinet's or a band's edges can score
     // better than the true one (DetectParts.RoomBoxFindsTheFarWallBehindClutter, the
     // project's clutter_5; see docs/detection-accuracy.md for the TUNE figures).
