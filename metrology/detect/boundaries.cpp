@@ -368,8 +368,9 @@ Result<RecedingBoundaries> findRecedingBoundaries(const WorkingImage& image, glm
     if (count == 1) imply(edgeless);
   }
   // (boxes is empty where a quadrant showed no step: `pick` has no weight then.)
+  const double leastWeight = boxes.empty() ? 0.0 : kAlternativeWeightShare * weightOfSet(pick);
   for (const auto& [weight, choice] : boxes) {
-    if (choice == pick || weight < kAlternativeWeightShare * weightOfSet(pick)) continue;
+    if (choice == pick || weight < leastWeight) continue;
     RecedingBoundaries alternative;
     bool edges = true;
     for (int b = 0; b < kBoundaryCount && edges; ++b) {
