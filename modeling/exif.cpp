@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/input_file.h"
+#include "modeling/image_decode.h"
 
 namespace pw::modeling {
 namespace {
@@ -273,15 +274,12 @@ std::optional<ExifFocal> exifFocal(const ExifTags& tags, int storedWidth, int st
 Result<Photo> readPhoto(const std::filesystem::path& path) {
   Photo photo;
   PW_TRY(checkInputFile(path, kPhotoInput));
-  cv::Mat stored;
-  try {
-    stored = cv::imread(path.string(), cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
-  } catch (const cv::Exception&) {
-    stored.release();
-  }
-  if (stored.empty()) return makeError(path.string() + ": not a readable PNG/JPEG image");
+  auto decoded = decodeImage(path, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
+  if (!decoded) return makeError(path.string() + ": " + decoded.message());
+  const cv::Mat& stored = decoded->image;
   photo.exif = readExif(path);
   photo.notes = photo.exif.notes;
+  if (decoded->decoderWarning) photo.warnings.push_back(*decoded->decoderWarning);
   photo.focal = exifFocal(photo.exif, stored.cols, stored.rows, &photo.notes);
   photo.bgr = applyOrientation(stored, photo.exif.orientation);
   return photo;

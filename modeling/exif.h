@@ -83,12 +83,13 @@ struct Photo {
   cv::Mat bgr;  // 8 bit, the orientation applied
   ExifTags exif;
   std::optional<ExifFocal> focal;
-  std::vector<std::string> notes;  // the EXIF's notes and exifFocal's
+  std::vector<std::string> notes;     // the EXIF's notes and exifFocal's
+  std::vector<std::string> warnings;  // what the image decoder warned of (image_decode.h)
 };
 
 // Reads a PNG or JPEG (BGR, 8 bit), applying the EXIF orientation itself (the pixels
 // and the focal length come from the same tags). Errors: a file that is missing or
-// not a readable image.
+// not a readable image, or a JPEG cut short (image_decode.h).
 Result<Photo> readPhoto(const std::filesystem::path& path);
 
 }  // namespace pw::modeling

@@ -108,6 +108,7 @@ Result<BuiltModel> buildModel(const Layout& layout, const std::vector<MeasuredSh
   for (size_t i = 0; i < layout.corridors.size(); ++i) {
     const modeling::LayoutEntry& entry = layout.corridors[i];
     const MeasuredShot& measured = shots[i];
+    model.warnings.insert(model.warnings.end(), measured.loaded.warnings.begin(), measured.loaded.warnings.end());
     auto corridor = modeling::makeCorridorModel(entry.name, measured.loaded.image, measured.measurement,
                                                 measured.loaded.shot.cutouts, entry.attach.has_value(), options);
     if (!corridor) return corridor.error();

@@ -56,6 +56,8 @@ struct BuiltModel {
   BuildingPlan plan;
   std::vector<CorridorModel> corridors;
   engine::Scene scene;
+  // What the photos' decoder warned of (LoadedShot::warnings), for the caller to show.
+  std::vector<std::string> warnings;
 };
 
 // Measures every corridor of the layout, cuts its textures, places it, opens the

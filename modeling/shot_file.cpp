@@ -2,10 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
-
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -14,6 +11,7 @@
 #include "base/input_file.h"
 #include "metrology/input_sigma.h"
 #include "modeling/exif.h"
+#include "modeling/image_decode.h"
 
 namespace pw::modeling {
 namespace fs = std::filesystem;
@@ -48,50 +46,6 @@ Result<glm::dvec2> point(const json& value, const std::string& what, const std::
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return makeError(where + ": " + what + " is not finite");
   return p;
 }
-
-// Sends what is written to stderr (file descriptor 2, where C decoders print) to a
-// temporary file while it lives, then restores it. Used only around image decoding,
-// which runs before any other thread of the program could have anything to say.
-class StderrCapture {
- public:
-  StderrCapture() {
-    std::fflush(stderr);
-    file_ = std::tmpfile();
-    saved_ = file_ ? ::dup(2) : -1;
-    if (saved_ >= 0) ::dup2(::fileno(file_), 2);
-  }
-  ~StderrCapture() {
-    restore();
-    if (file_) std::fclose(file_);
-  }
-  StderrCapture(const StderrCapture&) = delete;
-  StderrCapture& operator=(const StderrCapture&) = delete;
-
-  // The first non-empty line written so far (restores stderr first).
-  std::string firstLine() {
-    restore();
-    if (!file_) return {};
-    std::rewind(file_);
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, file_)) {
-      std::string line(buffer);
-      while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-      if (!line.empty()) return line;
-    }
-    return {};
-  }
-
- private:
-  void restore() {
-    if (saved_ < 0) return;
-    std::fflush(stderr);
-    ::dup2(saved_, 2);
-    ::close(saved_);
-    saved_ = -1;
-  }
-  std::FILE* file_ = nullptr;
-  int saved_ = -1;
-};
 
 // The focal length of a loaded shot (its photo decoded, oriented as shown): the one
 // given, else the shot's, else the photo's EXIF; and where it came from.
@@ -383,22 +337,10 @@ Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx,
     return makeError(path.string() + ": image: " + checked.message());
   }
   if (fs::file_size(s.imagePath, ec) == 0) return makeError(path.string() + ": image " + s.imagePath + " is empty");
-  std::string decoderSaid;
-  {
-    // libpng and libjpeg print their complaints on stderr themselves; keep them out
-    // of the one-line error and quote the first one instead.
-    StderrCapture capture;
-    try {
-      loaded.image = cv::imread(s.imagePath, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {
-      loaded.image.release();
-    }
-    decoderSaid = capture.firstLine();
-  }
-  if (loaded.image.empty()) {
-    return makeError(path.string() + ": image " + s.imagePath + " is not a readable PNG/JPEG" +
-                     (decoderSaid.empty() ? "" : " (" + decoderSaid + ")"));
-  }
+  auto decoded = decodeImage(s.imagePath, cv::IMREAD_COLOR);
+  if (!decoded) return makeError(path.string() + ": image " + s.imagePath + ": " + decoded.message());
+  loaded.image = std::move(decoded->image);
+  if (decoded->decoderWarning) loaded.warnings.push_back(*decoded->decoderWarning);
   if (s.imageWidth > 0 && (s.imageWidth != loaded.image.cols || s.imageHeight != loaded.image.rows)) {
     return makeError(path.string() + ": image_size " + std::to_string(s.imageWidth) + "x" + std::to_string(s.imageHeight) +
                      " does not match the image " + s.imagePath + ", which is " + std::to_string(loaded.image.cols) + "x" +

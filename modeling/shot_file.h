@@ -42,6 +42,9 @@ struct LoadedShot {
   // Where the focal length came from: "given", the shot's own `focal_source` (or
   // "shot" when it has none), or the EXIF's line ("EXIF FocalLength 4.20 mm with ...").
   std::string focalSource;
+  // What the image decoder warned of in a photo it still read whole (image_decode.h),
+  // for the caller to show as warnings.
+  std::vector<std::string> warnings;
 };
 Result<LoadedShot> loadShot(const std::filesystem::path& path, std::optional<double> focalPx = std::nullopt,
                             bool assumeFocal = false);

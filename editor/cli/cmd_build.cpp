@@ -130,6 +130,7 @@ int runBuild(Args& args) {
 
   auto model = modeling::buildModel(layout, options, measureOptions);
   if (!model) return fail(model.message());
+  for (const std::string& warning : model->warnings) printWarning(warning);
   for (const modeling::CorridorOverlap& overlap : model->plan.overlaps) {
     std::fprintf(stderr, "warning: %s\n", modeling::overlapText(model->layout, overlap).c_str());
   }

@@ -203,6 +203,7 @@ int runDetect(Args& args) {
   auto read = modeling::readPhoto(photoPath);
   if (!read) return fail(read.message());
   const cv::Mat& photo = read->bgr;
+  for (const std::string& warning : read->warnings) printWarning(warning);
   for (const std::string& note : read->notes) printNote(note);
   std::optional<modeling::ExifFocal> exifFocal;
   if (!options.focalPx && read->focal) {

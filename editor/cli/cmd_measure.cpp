@@ -223,6 +223,7 @@ int runMeasure(Args& args) {
 
   auto loaded = modeling::loadShot(shotPath, focalPx, assumeDefaults);
   if (!loaded) return fail(loaded.message());
+  for (const std::string& warning : loaded->warnings) printWarning(warning);
   // The shot file's own points and measurements first, then the command line's.
   points.insert(points.begin(), loaded->shot.points.begin(), loaded->shot.points.end());
   objects.insert(objects.begin(), loaded->shot.measurements.begin(), loaded->shot.measurements.end());

@@ -76,6 +76,7 @@ int runRectify(Args& args) {
 
   auto loaded = modeling::loadShot(shotPath);
   if (!loaded) return fail(loaded.message());
+  for (const std::string& warning : loaded->warnings) printWarning(warning);
   auto measurement = metrology::measureCorridor(loaded->shot, measureOptions);
   if (!measurement) return fail(shotPath + ": " + measurement.message());
   auto planes = metrology::rectifyCorridor(loaded->image, *measurement, options);

@@ -94,6 +94,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.path_ = path;
     doc.shot_ = std::move(loaded->shot);
     doc.photo_ = std::move(loaded->image);
+    doc.notes_ = std::move(loaded->warnings);
     doc.otherFields_ = std::move(loaded->otherFields);
     doc.saved_ = doc.shot_;
     // The photo's EXIF, to show beside the shot's own camera (loadShot's photo is
@@ -113,10 +114,15 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   }
 
   auto photo = modeling::readPhoto(path);
-  if (!photo) return makeError(path.string() + ": not a readable PNG/JPEG image (or a shot file, *.json)");
+  if (!photo) {
+    // (A file that is neither: say that a shot file opens too.)
+    const bool unreadable = photo.message().find("not a readable PNG/JPEG image") != std::string::npos;
+    return makeError(photo.message() + (unreadable ? "; nor a shot file (*.json)" : ""));
+  }
   doc.photo_ = std::move(photo->bgr);
   doc.exif_ = std::move(photo->exif);
   doc.exifFocal_ = std::move(photo->focal);
+  for (const std::string& warning : photo->warnings) doc.notes_.push_back(warning);
   for (const std::string& note : photo->notes) doc.notes_.push_back(note);
   doc.path_ = options.photoShotPath.empty() ? path.parent_path() / (path.stem().string() + ".shot.json")
                                             : options.photoShotPath;

@@ -524,6 +524,36 @@ TEST_F(HostileInput, GltfUrisOutsideTheModelsFolderAreRefused) {
 
 // ---- 5. One line, always ----
 
+TEST_F(HostileInput, APhotoCutShortIsRefusedInOneLineNamingIt) {
+  // A JPEG and a PNG cut off half way (a download or a copy stopped): libjpeg fills the
+  // missing rows with grey and would have them measured, and both decoders print their
+  // own complaint on stderr beside photowalk's line.
+  const fs::path shot = sampleShot();
+  const std::string jpeg = readText(fs::path(PW_SOURCE_DIR) / "assets" / "readme" / "editor_detected.jpg");
+  const std::string png = readText(dir_ / "corridor.png");
+  ASSERT_GT(jpeg.size(), 1000u);
+  writeText(dir_ / "cut.jpg", jpeg.substr(0, jpeg.size() / 2));
+  writeText(dir_ / "cut.png", png.substr(0, png.size() / 2));
+  const std::string shotText = readText(shot);
+  for (const std::string photo : {"cut.jpg", "cut.png"}) {
+    const std::string why = photo == "cut.jpg" ? "the file was cut short" : "not a readable PNG/JPEG image";
+    CommandRun r = photowalk("detect " + quoted(dir_ / photo) + " -o " + quoted(dir_ / "d.json"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    EXPECT_EQ(r.output.rfind("error: " + (dir_ / photo).string() + ": ", 0), 0u) << r.output;
+    EXPECT_TRUE(contains(r.output, why)) << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "d.json"));
+    // A shot whose photo it is: measure (and so build and the editor) refuses it too.
+    std::string cutShot = shotText;
+    cutShot.replace(cutShot.find("\"corridor.png\""), 14, "\"" + photo + "\"");
+    writeText(dir_ / "cut.json", cutShot);
+    r = photowalk("measure " + quoted(dir_ / "cut.json"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    EXPECT_TRUE(contains(r.output, why)) << r.output;
+  }
+}
+
 TEST_F(HostileInput, ALayoutFieldOfTheWrongTypeIsNamed) {
   sampleShot();
   for (const auto& [layout, field] : std::vector<std::pair<std::string, std::string>>{
