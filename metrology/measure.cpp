@@ -389,6 +389,24 @@ Dimensions cornerSigma(const Measurement& m) {
   return m.sigma;
 }
 
+std::optional<std::string> implausibleSize(const Shot& shot, const Measurement& m) {
+  const Dimensions& d = m.size;
+  if (d.widthM <= kPlausibleWidthM && d.heightM <= kPlausibleHeightM && d.lengthM <= kPlausibleLengthM) return std::nullopt;
+  char size[160], scale[160];
+  std::snprintf(size, sizeof size, "the corridor measures %.1f m wide, %.1f m high and %.1f m long", d.widthM, d.heightM,
+                d.lengthM);
+  if (shot.cameraHeightM) {
+    std::snprintf(scale, sizeof scale, "the camera height (%g m)", *shot.cameraHeightM);
+  } else if (shot.reference) {
+    std::snprintf(scale, sizeof scale, "the reference length %s-%s (%g m)", cornerName(shot.reference->from),
+                  cornerName(shot.reference->to), shot.reference->lengthM);
+  } else {
+    std::snprintf(scale, sizeof scale, "the scale");
+  }
+  return std::string(size) + ": no interior is that large; check that " + scale +
+         " is in metres (not centimetres or millimetres), then the focal length";
+}
+
 const SigmaSource* dominantSigmaSource(const Measurement& m, int which) {
   const SigmaSource* best = nullptr;
   for (const SigmaSource& s : m.sigmaSources) {

@@ -136,6 +136,16 @@ double dimensionOf(const Dimensions& d, int which);
 Dimensions cornerSigma(const Measurement& m);
 // The source with the largest share of that dimension's sigma (null without sources).
 const SigmaSource* dominantSigmaSource(const Measurement& m, int which);
+
+// Beyond these a measured box is no interior a photo is taken in (a hall or a hangar
+// is under 100 m across and 60 m high): the scale is what to check, its units first
+// (a camera height or reference length given in centimetres or millimetres scales
+// every length by 100 or 1000; a corridor 2-4 m wide is then 200 m wide or more).
+inline constexpr double kPlausibleWidthM = 100, kPlausibleHeightM = 60, kPlausibleLengthM = 1000;
+// One line saying so where the box measured is larger than any of those, naming what
+// gave the scale (the shot's camera height, else its reference length); none
+// otherwise. The measurement stands: the line is a warning, for the person to check.
+std::optional<std::string> implausibleSize(const Shot& shot, const Measurement& m);
 // "2.6 m ± 0.3": the sigma to one significant digit (two when it starts with 1 or 2),
 // the value to the same decimal place (millimetres at most, metres at least);
 // `plusMinus` "+/-" where the font has no ±.

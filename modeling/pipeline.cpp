@@ -109,6 +109,9 @@ Result<BuiltModel> buildModel(const Layout& layout, const std::vector<MeasuredSh
     const modeling::LayoutEntry& entry = layout.corridors[i];
     const MeasuredShot& measured = shots[i];
     model.warnings.insert(model.warnings.end(), measured.loaded.warnings.begin(), measured.loaded.warnings.end());
+    if (auto large = metrology::implausibleSize(measured.loaded.shot, measured.measurement)) {
+      model.warnings.push_back(entry.name + ": " + *large);
+    }
     auto corridor = modeling::makeCorridorModel(entry.name, measured.loaded.image, measured.measurement,
                                                 measured.loaded.shot.cutouts, entry.attach.has_value(), options);
     if (!corridor) return corridor.error();

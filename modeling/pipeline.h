@@ -56,7 +56,9 @@ struct BuiltModel {
   BuildingPlan plan;
   std::vector<CorridorModel> corridors;
   engine::Scene scene;
-  // What the photos' decoder warned of (LoadedShot::warnings), for the caller to show.
+  // What to check before trusting the model, for the caller to show: what the photos'
+  // decoder warned of (LoadedShot::warnings), a corridor larger than any interior
+  // (metrology::implausibleSize).
   std::vector<std::string> warnings;
 };
 

@@ -473,7 +473,8 @@ bool allFinite(const ordered_json& j) {
 }  // namespace
 
 Result<std::string> measurementJson(const metrology::Measurement& m, const std::string& focalSource,
-                                    const std::vector<std::string>& assumptions) {
+                                    const std::vector<std::string>& assumptions,
+                                    const std::vector<std::string>& warnings) {
   using namespace metrology;
   ordered_json out;
   out["method"] = methodName(m.method);
@@ -509,6 +510,7 @@ Result<std::string> measurementJson(const metrology::Measurement& m, const std::
     out["text"] = text;
   }
   if (!assumptions.empty()) out["assumptions"] = assumptions;
+  if (!warnings.empty()) out["warnings"] = warnings;
   out["vanishing_point_px"] = vec(m.vanishing.corridor.px);
   out["vanishing_residual_px"] = m.vanishing.corridor.residualPx;
   out["horizontal_vanishing_point"] = vanishingJson(m.vanishing.horizontal);

@@ -73,9 +73,11 @@ bool isVanishingPointsOnly(const nlohmann::json& doc);
 // source} when it has one; sigma_sources [{source, name, sigma_m {width_m, height_m,
 // length_m}, share {...: the source's part of the variance}}], sigma_mostly {width_m:
 // the source with the largest share, ...}, text {width_m: "2.6 m ± 0.3 (mostly: the
-// assumed focal length)", ...}, and `assumptions` (what was assumed for a missing
-// input) when not empty. Fails rather than print a NaN or infinity.
+// assumed focal length)", ...}, `assumptions` (what was assumed for a missing input)
+// and `warnings` (what to check before trusting it: metrology::implausibleSize) when
+// not empty. Fails rather than print a NaN or infinity.
 Result<std::string> measurementJson(const metrology::Measurement& measurement, const std::string& focalSource = "",
-                                    const std::vector<std::string>& assumptions = {});
+                                    const std::vector<std::string>& assumptions = {},
+                                    const std::vector<std::string>& warnings = {});
 
 }  // namespace pw::modeling

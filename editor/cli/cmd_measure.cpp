@@ -257,7 +257,12 @@ int runMeasure(Args& args) {
   const metrology::MeasureOptions withSigmas = metrology::withInputSigmas(*options, loaded->shot, origins);
   auto measurement = metrology::measureCorridor(loaded->shot, withSigmas);
   if (!measurement) return fail(shotPath + ": " + measurement.message());
-  auto text = modeling::measurementJson(*measurement, loaded->focalSource, assumptions);
+  std::vector<std::string> warnings;
+  if (auto large = metrology::implausibleSize(loaded->shot, *measurement)) {
+    warnings.push_back(*large);
+    printWarning(shotPath + ": " + *large);
+  }
+  auto text = modeling::measurementJson(*measurement, loaded->focalSource, assumptions, warnings);
   if (!text) return fail(shotPath + ": " + text.message());
   std::vector<metrology::SheetPoint> sheetPoints;
   std::vector<metrology::SheetObject> sheetObjects;

@@ -10,6 +10,7 @@ std::vector<std::string> measurementWarnings(const metrology::Shot& shot, const 
                                              const metrology::MeasureOptions& options, int* culpritCorner) {
   std::vector<std::string> out;
   if (culpritCorner) *culpritCorner = -1;
+  if (auto large = metrology::implausibleSize(shot, m)) out.push_back(*large);
   char line[256];
   // The corners' share only: the advice is where to put them (the focal length's and
   // the camera height's shares are said beside each dimension).

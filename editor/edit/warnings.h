@@ -1,4 +1,5 @@
-// Warnings a person can act on, from a measurement that succeeded: which number is
+// Warnings a person can act on, from a measurement that succeeded: a box larger than
+// any interior (its scale's units: metrology::implausibleSize), which number is
 // uncertain and what to do about it, which corner disagrees with the fitted box.
 #pragma once
 

@@ -103,6 +103,24 @@ def main():
             for key, truth in (("width_m", 4.0), ("height_m", 3.5), ("length_m", 19.0)):
                 check(doc["sigma_m"][key] > 0.05 * truth, "the assumed inputs widen the ± of %s" % key)
 
+        # A camera height given in centimetres (160, not 1.6): measured, 100 times too
+        # large, and said so on stderr and in the JSON's warnings; none for the right one.
+        r = run(exe, "measure", good)
+        check(r.returncode == 0 and "warnings" not in json.loads(r.stdout or "{}") and "warning:" not in r.stderr,
+              "a plausible corridor gets no warning (%s)" % r.stderr.strip())
+        centimetres = dict(base, camera_height_m=100 * base["camera_height_m"])
+        cm_path = os.path.join(tmp, "centimetres.json")
+        json.dump(centimetres, open(cm_path, "w"))
+        r = run(exe, "measure", cm_path)
+        check(r.returncode == 0, "measure measures a camera height in centimetres (%s)" % r.stderr.strip())
+        if r.returncode == 0:
+            doc = json.loads(r.stdout)
+            check(abs(doc["width_m"] / 400.0 - 1) < 0.003, "100 times the width (%s)" % doc["width_m"])
+            check(len(doc.get("warnings", [])) == 1 and "in metres (not centimetres" in doc["warnings"][0],
+                  "the JSON's warnings say to check the units (%s)" % doc.get("warnings"))
+            lines = [l for l in r.stderr.splitlines() if l.startswith("warning: ")]
+            check(len(lines) == 1 and "no interior is that large" in lines[0], "stderr says so (%s)" % r.stderr.strip())
+
         # Objects (issue 25): the far wall's floor corners as floor points are the width
         # apart; its top corner, on the vertical above one of them, the height above it.
         c = base["corners_px"]

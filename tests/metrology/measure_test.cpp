@@ -173,6 +173,33 @@ TEST(Measure, ReferenceLengthIsCheckedWhenTheHeightIsGiven) {
   EXPECT_NEAR(m->reference->errorPercent, -50, 1e-4);
 }
 
+TEST(Measure, AScaleInCentimetresOrMillimetresIsSaidToBeImplausible) {
+  SyntheticCorridor c;  // 2.4 m wide by default, camera 1.5 m up
+  Shot shot = c.shot();
+  auto right = measureCorridor(shot);
+  ASSERT_TRUE(right.ok()) << right.message();
+  EXPECT_FALSE(implausibleSize(shot, *right).has_value()) << *implausibleSize(shot, *right);
+  // The camera height in centimetres: every length 100 times too long.
+  shot.cameraHeightM = 100 * c.cameraHeightM;
+  auto centimetres = measureCorridor(shot);
+  ASSERT_TRUE(centimetres.ok()) << centimetres.message();
+  EXPECT_NEAR(centimetres->size.widthM, 100 * c.widthM, 1e-6 * 100 * c.widthM);
+  const auto said = implausibleSize(shot, *centimetres);
+  ASSERT_TRUE(said.has_value());
+  EXPECT_NE(said->find("the camera height (150 m)"), std::string::npos) << *said;
+  EXPECT_NE(said->find("in metres (not centimetres or millimetres)"), std::string::npos) << *said;
+  // The reference length in millimetres, no camera height.
+  shot.cameraHeightM.reset();
+  shot.reference = ReferenceLength{P3, P4, 1000 * c.widthM};
+  auto millimetres = measureCorridor(shot);
+  ASSERT_TRUE(millimetres.ok()) << millimetres.message();
+  const auto byReference = implausibleSize(shot, *millimetres);
+  ASSERT_TRUE(byReference.has_value());
+  EXPECT_NE(byReference->find("the reference length P3-P4 (" + std::to_string(int(1000 * c.widthM)) + " m)"),
+            std::string::npos)
+      << *byReference;
+}
+
 TEST(Measure, FocalFromMillimetres) {
   SyntheticCorridor c;
   Shot shot = c.shot();
