@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -139,6 +140,14 @@ struct Shot {
 
   glm::dvec2 principalPoint() const {
     return principalPointPx.value_or(glm::dvec2((imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5));
+  }
+  // Whether the principal point is away from the photo's centre: given, and more than
+  // a hundredth of a pixel off it (a shot file may write the centre itself, as the
+  // sample's does).
+  bool principalPointMoved() const {
+    if (!principalPointPx) return false;
+    const glm::dvec2 off = *principalPointPx - glm::dvec2((imageWidth - 1) * 0.5, (imageHeight - 1) * 0.5);
+    return std::abs(off.x) > 0.01 || std::abs(off.y) > 0.01;
   }
 };
 

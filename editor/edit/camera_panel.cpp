@@ -281,7 +281,8 @@ void EditMode::drawCamera(app::Shell& shell) {
     after.principalPointPx = glm::dvec2(pp.x, v);
     label = "principal point";
   }
-  ImGui::BeginDisabled(!shot.principalPointPx);
+  const bool ppMoved = shot.principalPointMoved();
+  ImGui::BeginDisabled(!ppMoved);
   if (ImGui::SmallButton("reset to centre")) {
     after.principalPointPx.reset();
     label = "principal point to the centre";
@@ -289,11 +290,11 @@ void EditMode::drawCamera(app::Shell& shell) {
   rememberWidget("reset to centre");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::TextDisabled(shot.principalPointPx ? "(moved)" : "(the photo's centre) (?)");
+  ImGui::TextDisabled(ppMoved ? "(moved)" : "(the photo's centre) (?)");
   constexpr const char* kPrincipalHelp =
       "drag the magenta PP handle to move it; a cropped or shifted photo moves the principal point "
       "away from its centre, so move it only for such a photo";
-  if (shot.principalPointPx) {
+  if (ppMoved) {
     wrapped(kWarningColour, kPrincipalHelp);  // moved: the warning stays in view
   } else if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("%s", kPrincipalHelp);
@@ -410,7 +411,7 @@ void EditMode::addCameraTrace(app::TraceRow& row) const {
                       {"focal_mm", shot.focalMm ? ordered_json(shot.focalMm->focalMm) : ordered_json(nullptr)},
                       {"sensor_width_mm", shot.focalMm ? ordered_json(shot.focalMm->sensorWidthMm) : ordered_json(nullptr)},
                       {"principal_px", pair(shot.principalPoint())},
-                      {"principal_default", !shot.principalPointPx.has_value()},
+                      {"principal_default", !shot.principalPointMoved()},
                       {"camera_height_m", optional(shot.cameraHeightM)}};
   camera["reference"] = shot.reference ? ordered_json{{"from", metrology::cornerName(shot.reference->from)},
                                                        {"to", metrology::cornerName(shot.reference->to)},
