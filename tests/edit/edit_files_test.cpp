@@ -123,9 +123,13 @@ TEST_F(EditFiles, AProcessKilledDuringAnEditOffersItsChangesBackAndRecoverGivesT
   ASSERT_EQ(first[0].corners.size(), 8u);
 
   // Edit, then wait (the replay's last event is far away) until the autosave is there;
-  // then kill -9, as a crash would end it.
+  // then kill -9, as a crash would end it. The autosave comes after about 180 frames
+  // (Autosave::kIntervalS of simulated time); the quit at 6000 leaves the test seconds
+  // to see it even at 2 ms a frame, and ends the editor within minutes where the test
+  // itself is killed first (a ctest run stopped: at 1000000 frames the editor ran on
+  // for hours, slowing every test after it).
   Script script = dragP5(first);
-  script.at(1000000, "quit");
+  script.at(6000, "quit");
   const fs::path scriptPath = dir_ / "killed.replay", log = dir_ / "killed.log";
   std::ofstream(scriptPath) << script.str();
   const fs::path side = dir_ / ".killed.json.autosave";
