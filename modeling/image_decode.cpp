@@ -96,7 +96,7 @@ Result<DecodedImage> decodeImage(const std::filesystem::path& path, int flags) {
     }
   }
   if (out.image.empty()) {
-    return makeError("not a readable PNG/JPEG image" + (decoderSaid.empty() ? "" : " (" + decoderSaid + ")"));
+    return makeError(kUnreadableImage + (decoderSaid.empty() ? std::string() : " (" + decoderSaid + ")"));
   }
   if (decoderSaid.rfind(kJpegCutShort, 0) == 0) {
     return makeError("the JPEG ends before its last row (the decoder: \"" + decoderSaid +

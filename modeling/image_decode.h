@@ -29,9 +29,12 @@ struct DecodedImage {
   std::optional<std::string> decoderWarning;
 };
 
+// The error for a file no decoder reads (then the decoder's first line in brackets).
+inline constexpr const char* kUnreadableImage = "not a readable PNG/JPEG image";
+
 // cv::imread(path, flags), its decoder's stderr caught. Errors (without the path, for
-// the caller to put it first): "not a readable PNG/JPEG image" (with the decoder's
-// first line), or the JPEG cut short. The catch is process-wide while it decodes (one
+// the caller to put it first): kUnreadableImage (with the decoder's first line), or
+// the JPEG cut short. The catch is process-wide while it decodes (one
 // decode at a time): a line in photowalk's own form ("error: ", "warning: ", "note: ")
 // that another thread prints then is passed on to stderr after it, never taken for
 // the decoder's.

@@ -13,6 +13,7 @@
 #include "base/input_file.h"
 #include "editor/edit/autosave.h"
 #include "metrology/detect/detect.h"
+#include "modeling/image_decode.h"
 #include "modeling/shot_file.h"
 
 namespace pw::edit {
@@ -116,7 +117,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
   auto photo = modeling::readPhoto(path);
   if (!photo) {
     // (A file that is neither: say that a shot file opens too.)
-    const bool unreadable = photo.message().find("not a readable PNG/JPEG image") != std::string::npos;
+    const bool unreadable = photo.message().find(modeling::kUnreadableImage) != std::string::npos;
     return makeError(photo.message() + (unreadable ? "; nor a shot file (*.json)" : ""));
   }
   doc.photo_ = std::move(photo->bgr);
