@@ -18,6 +18,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "metrology/detect/detect.h"
+#include "metrology/detect/layout_net.h"
 #include "metrology/detect/line_segments.h"
 #include "metrology/detect/room_box.h"
 #include "metrology/detect/vanishing_points.h"
@@ -163,6 +164,15 @@ int main() {
                      clutterWork.toWorking(frame->vertical.point), clutterSegments, frame->labels);
   });
   std::printf("    stage: the room's box on the working copy  %8.1f / %8.1f\n", box.wallMs, box.cpuMs);
+  // The layout networks (layout_net.h), asked where the edges' answer is not sure (as
+  // here): the whole photo and the far wall's neighbourhood, each 192 x 192, and the box
+  // fitted to each.
+  const pw::metrology::detect::CorridorAxes axes = corridorAxes(
+      frame->horizontal.point, frame->vertical.point, frame->corridor.point, clutterOptions.focalPx.value(), glm::dvec2(1999.5, 1499.5));
+  const Timing layout = median(9, [&] {
+    (void)fitLayout(clutterWork.bgr, clutterWork.scale, clutterOptions.focalPx.value(), glm::dvec2(1999.5, 1499.5), axes);
+  });
+  std::printf("    stage: the layout networks and their box   %8.1f / %8.1f\n", layout.wallMs, layout.cpuMs);
 
   DetectOptions smallOptions;
   smallOptions.focalPx = kFocalSmall;

@@ -85,7 +85,7 @@ json vanishingPointJson(const metrology::detect::VanishingPoint& vp) {
 
 json detectionJson(const CorridorDetection& d) {
   json j;
-  j["method"] = "lsd+manhattan-ransac+angular-profile+subpixel-edges";
+  j["method"] = "lsd+manhattan-ransac+angular-profile+subpixel-edges+layout-net";
   j["found"] = d.found;
   if (!d.found) j["reason"] = d.notFoundReason;
   j["focal_source"] = metrology::detect::focalSourceName(d.focalSource);

