@@ -22,7 +22,7 @@ constexpr int kLabels = 5;       // far wall, left wall, right wall, floor, ceil
 enum Label : int { kFar = 0, kLeft, kRight, kFloor, kCeiling };
 
 // The view around the far wall: the far wall's extent over its side (the crops the
-// zoomed network was trained on: 0.25-0.6), and its least side in working pixels.
+// zoomed network was trained on: 0.25-0.6), and its least side in the photo's pixels.
 constexpr double kNeighbourhoodShare = 0.4;
 constexpr double kMinNeighbourhoodPx = 24;
 

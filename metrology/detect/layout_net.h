@@ -1,13 +1,16 @@
-// The room's layout seen by a small convolutional network: each pixel of the photo
-// (shrunk to a 192 px long side) as the far wall, the left or right wall, the floor or
-// the ceiling, and the corridor's box fitted to that map. The network
-// (assets/models/layout_net.onnx, built into the program; trained by
-// scripts/train_layout_net.py on the random scenes' TUNE seeds only) is given the
-// photo and, per pixel, where its ray points in the corridor's frame (from the
-// vanishing points), so it only has to say where the box's sides are. It sees the
-// room's layout behind a person or a cabinet, where the edges do not show, but only to
-// a few pixels: detection takes its box as a person's rough box to be fitted to the
-// photo's edges (DetectOptions::hintPx), never as an answer of its own.
+// The room's layout seen by two small convolutional networks: each pixel as the far
+// wall, the left or right wall, the floor or the ceiling of the room's box, and the box
+// fitted to that map; first on the whole photo (shrunk to a 192 px long side,
+// assets/models/layout_net.onnx), then on the far wall's neighbourhood zoomed to 192 x
+// 192 (layout_zoom_net.onnx). Both are built into the program and were trained by
+// scripts/train_layout_net.py on the random scenes' TUNE seeds only. Each is given the
+// photo and, per pixel, where its ray points in the corridor's frame (from the vanishing
+// points), so it only has to say where the box's sides are. They see the room's layout
+// behind a person or a cabinet, where the edges do not show, to a few pixels on scenes
+// like those they learnt from, and can be tens of pixels off on others (a door at the far
+// end taken for the far wall): detection uses the box only to confirm an answer of the
+// edges, or as a person's rough box to be fitted to the edges where those found none
+// (detect.cpp, findCorridor).
 #pragma once
 
 #include <array>
