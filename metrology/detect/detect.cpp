@@ -259,10 +259,29 @@ void doubt(CorridorDetection& d, const std::string& why) {
   d.doubts.push_back(why);
 }
 
-double farWallDistancePx(const CorridorDetection& a, const CorridorDetection& b) {
+std::array<glm::dvec2, 8> cornerPixels(const CorridorDetection& d) {
+  std::array<glm::dvec2, 8> px{};
+  for (int k = 0; k < kCornerCount; ++k) px[k] = d.corners[k].px;
+  return px;
+}
+
+// The far-wall corners' (P1..P4) largest distance between two sets of corners.
+double farWallDistancePx(const std::array<glm::dvec2, 8>& a, const std::array<glm::dvec2, 8>& b) {
   double worst = 0;
-  for (int k = 0; k < 4; ++k) worst = std::max(worst, glm::length(a.corners[k].px - b.corners[k].px));
+  for (int k = P1; k <= P4; ++k) worst = std::max(worst, glm::length(a[k] - b[k]));
   return worst;
+}
+
+double farWallDistancePx(const CorridorDetection& a, const CorridorDetection& b) {
+  return farWallDistancePx(cornerPixels(a), cornerPixels(b));
+}
+
+// The same, the median of the four corners' distances.
+double farWallMedianDistancePx(const std::array<glm::dvec2, 8>& a, const std::array<glm::dvec2, 8>& b) {
+  std::array<double, 4> d{};
+  for (int k = P1; k <= P4; ++k) d[k] = glm::length(a[k] - b[k]);
+  std::sort(d.begin(), d.end());
+  return 0.5 * (d[1] + d[2]);
 }
 
 // Share of the ray from the vanishing point through `corner` (working pixels) that
@@ -1392,24 +1411,6 @@ Result<CorridorDetection> findCorridorByEdges(const PinholeView& photo, const Wo
   return finish(better);
 }
 
-// The far-wall corners' (P1..P4) largest distance between two sets of corners.
-double farCornersApartPx(const std::array<glm::dvec2, 8>& a, const std::array<glm::dvec2, 8>& b) {
-  double most = 0;
-  for (int k = P1; k <= P4; ++k) most = std::max(most, glm::length(a[k] - b[k]));
-  return most;
-}
-double farCornersMedianApartPx(const std::array<glm::dvec2, 8>& a, const std::array<glm::dvec2, 8>& b) {
-  std::array<double, 4> d{};
-  for (int k = P1; k <= P4; ++k) d[k] = glm::length(a[k] - b[k]);
-  std::sort(d.begin(), d.end());
-  return 0.5 * (d[1] + d[2]);
-}
-std::array<glm::dvec2, 8> cornerPixels(const CorridorDetection& d) {
-  std::array<glm::dvec2, 8> px{};
-  for (int k = 0; k < kCornerCount; ++k) px[k] = d.corners[k].px;
-  return px;
-}
-
 // Detection by the photo's edges (findCorridorByEdges); where that is unsure, the room's
 // layout as the layout network sees it (layout_net.h) makes it sure where the two agree,
 // and starts a rough box's fit where the edges found none.
@@ -1427,7 +1428,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   if (!layout) return byEdges;
   // An unsure answer of the edges whose far wall the network puts within a few pixels
   // of it: two independent looks at the room agree.
-  if (byEdges->found && farCornersApartPx(cornerPixels(*byEdges), *layout) <= kLayoutAgreesPx) {
+  if (byEdges->found && farWallDistancePx(cornerPixels(*byEdges), *layout) <= kLayoutAgreesPx) {
     byEdges->confident = true;
     byEdges->doubts.clear();
     return byEdges;
@@ -1447,7 +1448,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   if (std::all_of(fitted->corners.begin(), fitted->corners.end(), [](const CornerEstimate& c) { return c.confidence == 0; })) {
     return byEdges;
   }
-  if (farCornersMedianApartPx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) return byEdges;
+  if (farWallMedianDistancePx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) return byEdges;
   fitted->confident = false;
   fitted->doubts.clear();
   doubt(*fitted, "the far wall is where the layout network put it, fitted to the edges; the edges alone found none (" +
