@@ -35,8 +35,12 @@ FAR, LEFT, RIGHT, FLOOR, CEILING, PAD = 0, 1, 2, 3, 4, 255
 
 
 def seeds_of(text):
-    a, _, b = text.partition("-")
-    return range(int(a), int(b or a) + 1)
+    """Seeds written A-B[,C-D...]."""
+    seeds = []
+    for part in text.split(","):
+        a, _, b = part.partition("-")
+        seeds += range(int(a), int(b or a) + 1)
+    return seeds
 
 
 def pixel_frame(direction_camera):

@@ -303,7 +303,7 @@ Result<CrossSectionMatch> findFarWall(const WorkingImage& image, const CrossSect
   if (family.largestInside(image.bgr.size(), 2.0) < 4) return makeError("the corridor's boundaries leave the photo at once");
   const auto best = scanFarWall(image, family, 3.0, std::numeric_limits<double>::infinity(), 4, /*allowHidden=*/true);
   if (!best || best->score < kMinFarWallScore) {
-    return makeError("no far wall: no rectangle across the corridor where its boundaries begin");
+    return makeError(kNoFarWallAcrossBoundaries);
   }
   return *best;
 }

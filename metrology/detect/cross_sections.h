@@ -58,6 +58,11 @@ struct CrossSectionMatch {
   int hiddenSide = -1;
 };
 
+// findFarWall's error where the four boundaries were found but no rectangle across the
+// corridor where they begin: a room's box whose far wall does not show (detect.cpp takes
+// the layout network's far wall as a guess there).
+inline constexpr const char* kNoFarWallAcrossBoundaries = "no far wall: no rectangle across the corridor where its boundaries begin";
+
 // The far wall: the section with edges on all four sides where the receding
 // boundaries start (they run outwards from its corners, not inwards). A band or
 // door frame nearer the camera has edges on its sides too, but the boundaries run

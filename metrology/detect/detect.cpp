@@ -85,6 +85,9 @@ constexpr double kAgreementPx = 2.0;
 // 2.5 px made 3 wrong answers sure, within 2 px none (14 right ones).
 constexpr double kLayoutAgreesPx = 2.0;
 constexpr double kLayoutFittedWithinPx = 20.0;
+// The network's box as it put it: its far corners' error (median of four) on TUNE
+// 450-599, 68th percentile (its median 3.5 px).
+constexpr double kLayoutGuessSigmaPx = 7.0;
 // P5..P8 at the nearest cross-section this share of the photo's short side inside it.
 constexpr double kNearMarginOfShortSide = 0.01;
 // A corridor's end is no more than this many times as high as it is wide, nor as wide as
@@ -1411,9 +1414,40 @@ Result<CorridorDetection> findCorridorByEdges(const PinholeView& photo, const Wo
   return finish(better);
 }
 
+// Where the edges found the room's four boundaries but no far wall where they begin
+// (kNoFarWallAcrossBoundaries: its foot or its corners hidden), and do not bear the
+// network's far wall out either: the network's box as it put it, a guess for a person to
+// start from (exit 3), where the corridor's lines meet inside the photo and the far wall
+// is a corridor's end (farWallAspect). Not for the edges' other reasons (too few receding
+// lines, boundaries that divide no surfaces): a road, a street or a portrait gives those
+// too, and the network, which has no notion of "not a room", a box all the same. Each
+// corner's sigma is the network's error on scenes it was not trained on
+// (kLayoutGuessSigmaPx).
+CorridorDetection layoutGuess(const CorridorDetection& edges, const std::array<glm::dvec2, 8>& layout, cv::Size size) {
+  if (edges.notFoundReason != kNoFarWallAcrossBoundaries) return edges;
+  const glm::dvec3 h = edges.corridor.point;
+  const bool meetsInside = std::abs(h.z) > 1e-12 && h.x / h.z >= 0 && h.y / h.z >= 0 && h.x / h.z <= size.width - 1 &&
+                           h.y / h.z <= size.height - 1;
+  if (!meetsInside) return edges;
+  CorridorDetection guess = edges;
+  for (int k = 0; k < kCornerCount; ++k) guess.corners[k] = {layout[k], 0.0, kLayoutGuessSigmaPx};
+  guess.found = true;
+  guess.confident = false;
+  guess.nearDepth = NearDepth::kImageEdge;
+  if (const double aspect = farWallAspect(guess); !(aspect <= kMaxFarWallAspect && aspect >= 1.0 / kMaxFarWallAspect)) {
+    return edges;
+  }
+  guess.notFoundReason.clear();
+  guess.doubts.clear();
+  doubt(guess, "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone found the "
+               "room's four boundaries but no far wall");
+  return guess;
+}
+
 // Detection by the photo's edges (findCorridorByEdges); where that is unsure, the room's
 // layout as the layout network sees it (layout_net.h) makes it sure where the two agree,
-// and starts a rough box's fit where the edges found none.
+// and starts a rough box's fit where the edges found none, or is itself the guess where
+// they found the room's boundaries but no far wall (layoutGuess).
 Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
                                        const std::vector<LineSegment>& segments, const DetectOptions& options,
                                        glm::dvec2 pp) {
@@ -1443,12 +1477,12 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   fromLayout.focalPx = byEdges->focalPx;
   fromLayout.hintNearDepthGiven = false;
   auto fitted = findCorridorByEdges(photo, work, segments, fromLayout, pp);
-  if (!fitted || !fitted->found) return byEdges;
   // (A layout the photo's edges do not bear out comes back as it was put: no confidence.)
-  if (std::all_of(fitted->corners.begin(), fitted->corners.end(), [](const CornerEstimate& c) { return c.confidence == 0; })) {
-    return byEdges;
+  if (!fitted || !fitted->found ||
+      std::all_of(fitted->corners.begin(), fitted->corners.end(), [](const CornerEstimate& c) { return c.confidence == 0; }) ||
+      farWallMedianDistancePx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) {
+    return layoutGuess(*byEdges, *layout, photo.size());
   }
-  if (farWallMedianDistancePx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) return byEdges;
   fitted->confident = false;
   fitted->doubts.clear();
   doubt(*fitted, "the far wall is where the layout network put it, fitted to the edges; the edges alone found none (" +

@@ -107,8 +107,10 @@ struct CorridorDetection {
 // Finds the corridor in `photoBgr` (CV_8UC3, any size). The error is for input a
 // person must fix (empty image, a focal length or principal point that makes no
 // sense); a photo that simply shows no corridor comes back with found == false and
-// the reason. Never makes corners up: every corner lies on fitted image edges or, for
-// P5..P8 without a marked cross-section, on fitted boundaries at the stated depth.
+// the reason. A sure answer's corners lie on fitted image edges or, for P5..P8 without a
+// marked cross-section, on fitted boundaries at the stated depth; an unsure one's may be
+// a person's rough box or the layout network's (layout_net.h) as they were put, with
+// confidence 0 and a doubt saying so.
 Result<CorridorDetection> detectCorridor(const cv::Mat& photoBgr, const DetectOptions& options);
 
 // The far wall's (P1..P4) width over its height in the corridor: it stands square to the
