@@ -139,6 +139,16 @@ constexpr double kMirrorFootShare = 0.5;
 // its height, from its foot up (the random scenes: 0.17-0.82).
 constexpr double kMinHorizonShareOfFarWall = 0.12, kMaxHorizonShareOfFarWall = 0.9;
 
+// A far wall of this width over height is a corridor's end (kMaxFarWallAspect).
+bool isCorridorEndAspect(double aspect) { return aspect <= kMaxFarWallAspect && aspect >= 1.0 / kMaxFarWallAspect; }
+
+// The corridor's vanishing point of `d` lies inside a photo of `size`.
+bool corridorMeetsInside(const CorridorDetection& d, cv::Size size) {
+  if (!d.corridor.isFinite()) return false;
+  const glm::dvec2 vp = d.corridor.pixel();
+  return vp.x >= 0 && vp.y >= 0 && vp.x <= size.width - 1 && vp.y <= size.height - 1;
+}
+
 CorridorDetection notFound(CorridorDetection d, const std::string& reason) {
   d.found = false;
   d.notFoundReason = reason;
@@ -650,7 +660,7 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
       }
     }
   }
-  if (const double aspect = farWallAspect(d); !(aspect <= kMaxFarWallAspect && aspect >= 1.0 / kMaxFarWallAspect)) {
+  if (const double aspect = farWallAspect(d); !isCorridorEndAspect(aspect)) {
     const bool wide = aspect > 1;
     char times[32];
     std::snprintf(times, sizeof times, "%.1f", wide ? aspect : 1.0 / aspect);
@@ -1425,18 +1435,13 @@ Result<CorridorDetection> findCorridorByEdges(const PinholeView& photo, const Wo
 // (kLayoutGuessSigmaPx).
 CorridorDetection layoutGuess(const CorridorDetection& edges, const std::array<glm::dvec2, 8>& layout, cv::Size size) {
   if (edges.notFoundReason != kNoFarWallAcrossBoundaries) return edges;
-  const glm::dvec3 h = edges.corridor.point;
-  const bool meetsInside = std::abs(h.z) > 1e-12 && h.x / h.z >= 0 && h.y / h.z >= 0 && h.x / h.z <= size.width - 1 &&
-                           h.y / h.z <= size.height - 1;
-  if (!meetsInside) return edges;
+  if (!corridorMeetsInside(edges, size)) return edges;
   CorridorDetection guess = edges;
   for (int k = 0; k < kCornerCount; ++k) guess.corners[k] = {layout[k], 0.0, kLayoutGuessSigmaPx};
   guess.found = true;
   guess.confident = false;
   guess.nearDepth = NearDepth::kImageEdge;
-  if (const double aspect = farWallAspect(guess); !(aspect <= kMaxFarWallAspect && aspect >= 1.0 / kMaxFarWallAspect)) {
-    return edges;
-  }
+  if (!isCorridorEndAspect(farWallAspect(guess))) return edges;
   guess.notFoundReason.clear();
   guess.doubts.clear();
   doubt(guess, "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone found the "
@@ -1560,9 +1565,8 @@ double farWallAspect(const CorridorDetection& d) {
 }
 
 std::optional<std::array<glm::dvec2, 8>> boxAlongVanishingPoints(const CorridorDetection& d, cv::Size size) {
-  if (!d.hasVanishingPoints || !d.corridor.isFinite()) return std::nullopt;
+  if (!d.hasVanishingPoints || !corridorMeetsInside(d, size)) return std::nullopt;
   const glm::dvec2 vp = d.corridor.pixel();
-  if (!(vp.x >= 0 && vp.y >= 0 && vp.x <= size.width - 1 && vp.y <= size.height - 1)) return std::nullopt;
   const double half = 0.1 * std::min(size.width, size.height);
   const glm::dvec2 across = directionTowards(d.horizontal.point, vp, {1, 0});
   const glm::dvec2 down = directionTowards(d.vertical.point, vp, {0, 1});
