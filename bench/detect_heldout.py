@@ -22,6 +22,8 @@ prints per scene and in total, for each of the two:
 The ranges (say which in the README; nobody tunes on HELD_OUT):
   TUNE     = seeds 0-599          tune detection on these (0-299 until 2026-12-04; 300-599
                                   then checked a rule chosen on 0-299 before it was tuned on)
+             and seeds 600-1399   tuned on too since 2026-12-07 (networks trained on them,
+                                  not kept; the layout network's room score chosen on them)
   HELD_OUT = seeds 100000-100299  report on these, never look at them while tuning
 A scene costs about 2-3 s of povray on one core at its full size (640-1024 px).
 """

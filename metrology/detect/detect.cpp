@@ -88,6 +88,12 @@ constexpr double kLayoutFittedWithinPx = 20.0;
 // The network's box as it put it: its far corners' error (median of four) on TUNE
 // 450-599, 68th percentile (its median 3.5 px).
 constexpr double kLayoutGuessSigmaPx = 7.0;
+// The whole photo's fit (LayoutFit::wholeScore) at or above which the network's box is a
+// guess whatever the edges' reason for finding none: the photo looks like a room to the
+// network. Seeds 600-1399 (neither trained nor tuned on before): 98% of the rooms above
+// it, every "no corridor" with the box in view (15) among them; the tests' drawn road,
+// outdoor scene and camera.png, and the York Urban streets that reach the guess, below it.
+constexpr double kLayoutRoomScore = -0.25;
 // P5..P8 at the nearest cross-section this share of the photo's short side inside it.
 constexpr double kNearMarginOfShortSide = 0.01;
 // A corridor's end is no more than this many times as high as it is wide, nor as wide as
@@ -1424,17 +1430,19 @@ Result<CorridorDetection> findCorridorByEdges(const PinholeView& photo, const Wo
   return finish(better);
 }
 
-// Where the edges found the room's four boundaries but no far wall where they begin
-// (kNoFarWallAcrossBoundaries: its foot or its corners hidden), and do not bear the
-// network's far wall out either: the network's box as it put it, a guess for a person to
-// start from (exit 3), where the corridor's lines meet inside the photo and the far wall
-// is a corridor's end (farWallAspect). Not for the edges' other reasons (too few receding
-// lines, boundaries that divide no surfaces): a road, a street or a portrait gives those
-// too, and the network, which has no notion of "not a room", a box all the same. Each
-// corner's sigma is the network's error on scenes it was not trained on
-// (kLayoutGuessSigmaPx).
-CorridorDetection layoutGuess(const CorridorDetection& edges, const std::array<glm::dvec2, 8>& layout, cv::Size size) {
-  if (edges.notFoundReason != kNoFarWallAcrossBoundaries) return edges;
+// Where the edges found no box and do not bear the network's far wall out either: the
+// network's box as it put it, a guess for a person to start from (exit 3), where the
+// photo looks like a room to the network (kLayoutRoomScore) or the edges found the room's
+// four boundaries but no far wall where they begin (kNoFarWallAcrossBoundaries: its foot
+// or its corners hidden), the corridor's lines meet inside the photo and the far wall is
+// a corridor's end (farWallAspect). Not otherwise: a road, a street or a portrait gives
+// the edges' other reasons (too few receding lines, boundaries that divide no surfaces)
+// too, and the network a box all the same, though one it fits less well. Each corner's
+// sigma is the network's error on scenes it was not trained on (kLayoutGuessSigmaPx).
+CorridorDetection layoutGuess(const CorridorDetection& edges, const LayoutFit& fit, const std::array<glm::dvec2, 8>& layout,
+                              cv::Size size) {
+  const bool boundariesFound = edges.notFoundReason == kNoFarWallAcrossBoundaries;
+  if (!boundariesFound && !(fit.wholeScore >= kLayoutRoomScore)) return edges;
   if (!corridorMeetsInside(edges, size)) return edges;
   CorridorDetection guess = edges;
   for (int k = 0; k < kCornerCount; ++k) guess.corners[k] = {layout[k], 0.0, kLayoutGuessSigmaPx};
@@ -1444,8 +1452,10 @@ CorridorDetection layoutGuess(const CorridorDetection& edges, const std::array<g
   if (!isCorridorEndAspect(farWallAspect(guess))) return edges;
   guess.notFoundReason.clear();
   guess.doubts.clear();
-  doubt(guess, "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone found the "
-               "room's four boundaries but no far wall");
+  doubt(guess, boundariesFound ? "the far wall is where the layout network put it; the photo's edges do not bear it out, "
+                                 "and alone found the room's four boundaries but no far wall"
+                               : "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone "
+                                 "found no box: " + edges.notFoundReason);
   return guess;
 }
 
@@ -1486,7 +1496,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   if (!fitted || !fitted->found ||
       std::all_of(fitted->corners.begin(), fitted->corners.end(), [](const CornerEstimate& c) { return c.confidence == 0; }) ||
       farWallMedianDistancePx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) {
-    return layoutGuess(*byEdges, *layout, photo.size());
+    return layoutGuess(*byEdges, *fit, *layout, photo.size());
   }
   fitted->confident = false;
   fitted->doubts.clear();

@@ -192,6 +192,7 @@ std::optional<LayoutFit> fitLayoutOrThrow(const cv::Mat& bgr, double workScale, 
   if (whole.farU.size() < 4) return std::nullopt;
   LayoutFit fit = fitBox(whole, {percentile(whole.farU, 0.02), percentile(whole.farU, 0.98), percentile(whole.farV, 0.02),
                                  percentile(whole.farV, 0.98)});
+  fit.wholeScore = fit.score;
   // The far wall's corners in working pixels, and a view around them 2.5 times their extent.
   glm::dvec2 lo(1e300), hi(-1e300);
   for (const glm::dvec2 uv : {glm::dvec2(fit.left, fit.top), {fit.right, fit.top}, {fit.left, fit.bottom}, {fit.right, fit.bottom}}) {
@@ -204,7 +205,9 @@ std::optional<LayoutFit> fitLayoutOrThrow(const cv::Mat& bgr, double workScale, 
   const View zoomed = look(zoomNet(), bgr, workScale, centre.x - 0.5 * side, centre.y - 0.5 * side, kInputSide / side,
                            focalPx, principalPx, axes);
   if (zoomed.rays.size() < 16) return fit;
-  return fitBox(zoomed, {fit.left, fit.right, fit.bottom, fit.top});
+  LayoutFit closer = fitBox(zoomed, {fit.left, fit.right, fit.bottom, fit.top});
+  closer.wholeScore = fit.wholeScore;
+  return closer;
 }
 
 }  // namespace
