@@ -1,5 +1,5 @@
 // photowalk tour: a smooth walk through a model, rendered to numbered PNG frames and,
-// where OpenCV's video writer can, a video.
+// where OpenCV's video writer can, a video (through the video plugin: editor/video/video_file.h).
 #include <unistd.h>
 
 #include <cmath>
@@ -8,16 +8,17 @@
 #include <deque>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include <glm/gtc/constants.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "base/atomic_file.h"
 #include "base/staging.h"
 #include "editor/cli/command.h"
+#include "editor/video/video_file.h"
 #include "engine/io/model_io.h"
 #include "modeling/tour.h"
 #include "engine/gpu/renderer.h"
@@ -83,7 +84,7 @@ void showProgress(int done, int total) {
 // lavapipe, and most of the time on a GPU. At most two frames wait.
 class FrameWriter {
  public:
-  FrameWriter(fs::path folder, cv::VideoWriter* video) : folder_(std::move(folder)), video_(video) {
+  FrameWriter(fs::path folder, VideoFile* video) : folder_(std::move(folder)), video_(video) {
     thread_ = std::thread([this] { run(); });
   }
   ~FrameWriter() { finish(); }
@@ -134,7 +135,7 @@ class FrameWriter {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", index);
     if (auto saved = engine::saveImage(folder_ / name, image); !saved) return saved.message();
-    if (video_ && video_->isOpened()) {
+    if (video_) {
       cv::Mat rgba(image.height, image.width, CV_8UC4, image.rgba.data()), bgr;
       cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
       video_->write(bgr);
@@ -143,7 +144,7 @@ class FrameWriter {
   }
 
   fs::path folder_;
-  cv::VideoWriter* video_;
+  VideoFile* video_;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::pair<int, engine::Image>> queue_;
@@ -219,7 +220,7 @@ int runTour(Args& args) {
   if (auto uploaded = (*renderer)->setScene(*scene); !uploaded) return fail(uploaded.message());
   if (auto clean = (*renderer)->validationStatus(); !clean) return fail(clean.message());
 
-  cv::VideoWriter video;
+  std::optional<VideoFile> video;
   fs::path videoTemp;
   if (videoPath) {
     const fs::path target(*videoPath);
@@ -229,20 +230,22 @@ int runTour(Args& args) {
     const std::string prefix = "." + target.stem().string() + ".partial-";
     removeStaleTemporaries(target.parent_path(), prefix);
     videoTemp = target.parent_path() / (prefix + processIdText() + target.extension().string());
-    video.open(videoTemp.string(), cv::VideoWriter::fourcc(avi ? 'M' : 'm', avi ? 'J' : 'p', avi ? 'P' : '4', avi ? 'G' : 'v'),
-               fps, {size.first, size.second});
-    if (!video.isOpened()) {
-      printWarning(*videoPath + ": this OpenCV cannot write that video format; writing frames only");
+    auto opened = VideoFile::open(videoTemp, videoFourcc(avi ? 'M' : 'm', avi ? 'J' : 'p', avi ? 'P' : '4', avi ? 'G' : 'v'),
+                                  fps, size.first, size.second);
+    if (opened) {
+      video = std::move(*opened);
+    } else {
+      printWarning(*videoPath + ": " + opened.message() + "; writing frames only");
     }
   }
 
   // A failed tour leaves no half-written video behind.
   const auto abandon = [&](const std::string& message) {
-    if (video.isOpened()) video.release();
+    video.reset();
     if (!videoTemp.empty()) fs::remove(videoTemp, ec);
     return fail(message);
   };
-  FrameWriter writer(*output, &video);
+  FrameWriter writer(*output, video ? &*video : nullptr);
   for (int i = 0; i < frames; ++i) {
     auto image = (*renderer)->renderToImage(cameras[i], size.first, size.second);
     if (!image) {
@@ -260,14 +263,13 @@ int runTour(Args& args) {
   }
   if (const std::string failure = writer.finish(); !failure.empty()) return abandon(failure);
   std::printf("%d frames of %dx%d in %s\n", frames, size.first, size.second, output->c_str());
-  if (video.isOpened()) {
-    video.release();
+  if (video) {
+    video.reset();
     // OpenCV's writer says nothing when the disk fills: read the video back, and keep
     // the previous one unless every frame is there.
-    cv::VideoCapture check(videoTemp.string());
-    const bool readable = check.isOpened();
-    const double written = readable ? check.get(cv::CAP_PROP_FRAME_COUNT) : 0;
-    check.release();
+    const Result<double> count = videoFrameCount(videoTemp);
+    const bool readable = count.ok();
+    const double written = readable ? *count : 0;
     const auto bytes = fs::file_size(videoTemp, ec);
     if (!readable || ec || bytes == 0 || (written > 0 && written < frames)) {
       fs::remove(videoTemp, ec);

@@ -196,6 +196,38 @@ TEST(TourCommand, WritesMovingFramesAndAVideo) {
 
 // A frame that cannot be written (here a folder is in its way) stops the tour with a
 // one-line error, the frames written in the background included, and no video is left.
+// OpenCV's video module (FFmpeg, GStreamer: about 100 more shared libraries, 60-90 ms of
+// every command's start, bench/startup.py) is loaded only when a tour writes a video,
+// from the plugin beside the program; the program itself does not link it.
+TEST(TourCommand, TheProgramStartsWithoutTheVideoLibraries) {
+  const CommandRun run = test::runCommand("LD_TRACE_LOADED_OBJECTS=1 " + std::string(PW_PHOTOWALK));
+  ASSERT_NE(run.output.find("libopencv_core"), std::string::npos) << run.output;  // (the list is there)
+  EXPECT_EQ(run.output.find("libopencv_videoio"), std::string::npos) << "photowalk links OpenCV's video module";
+  EXPECT_EQ(run.output.find("libavcodec"), std::string::npos) << "photowalk links FFmpeg";
+}
+
+// Where the plugin is missing (the program copied alone elsewhere), a tour says so and
+// writes its frames, as where OpenCV cannot write the format.
+TEST(TourCommand, WithoutTheVideoPluginTheFramesAreWrittenAndItSaysSo) {
+  const auto dir = test::testOutputDir() / "tour_no_plugin";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto program = dir / "photowalk";
+  std::error_code ec;
+  std::filesystem::create_hard_link(PW_PHOTOWALK, program, ec);
+  if (ec) std::filesystem::copy_file(PW_PHOTOWALK, program);
+  ASSERT_FALSE(std::filesystem::exists(dir / "libpw_video.so"));
+  const std::string video = (dir / "tour.mp4").string();
+  const CommandRun run =
+      test::runCommand(program.string() + " tour sample -o " + (dir / "frames").string() + " --frames 2 --size 32x18 --cpu --video " + video);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("cannot load the video plugin"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("writing frames only"), std::string::npos) << run.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "frame_0001.png"));
+  EXPECT_FALSE(std::filesystem::exists(video));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(TourCommand, AFrameThatCannotBeWrittenStopsTheTour) {
   const auto dir = test::testOutputDir() / "tour_blocked";
   std::filesystem::remove_all(dir);
