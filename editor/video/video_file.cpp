@@ -69,8 +69,6 @@ void VideoFile::write(const cv::Mat& bgr) {
   plugin().write(video_.get(), bgr.data, bgr.cols, bgr.rows, bgr.step);
 }
 
-void VideoFile::close() { video_.reset(); }
-
 Result<double> videoFrameCount(const fs::path& path) {
   const Plugin& p = plugin();
   if (!p.error.empty()) return makeError(p.error);

@@ -18,10 +18,9 @@ class VideoFile {
   // that format.
   static Result<VideoFile> open(const std::filesystem::path& path, int fourcc, double fps, int width, int height);
 
-  // Appends a CV_8UC3 BGR frame of the size opened.
+  // Appends a CV_8UC3 BGR frame of the size opened. The file is finished when the
+  // VideoFile is destroyed.
   void write(const cv::Mat& bgr);
-  // Finishes the file; writing after it does nothing.
-  void close();
 
  private:
   struct Closer {

@@ -1,7 +1,7 @@
 // The C interface between photowalk and its video plugin (libpw_video.so, built from
 // video_plugin.cpp beside the program). OpenCV's video module pulls FFmpeg and
-// GStreamer in, about 250 shared libraries that took 80 ms of every command's start
-// (bench/startup.sh); only `tour --video` writes a video, so only it loads them,
+// GStreamer in, 102 more shared libraries that took 60-90 ms of every command's start
+// (bench/startup.py); only `tour --video` writes a video, so only it loads them,
 // through video_file.h. A C interface, so that nothing but plain data crosses it.
 #pragma once
 
