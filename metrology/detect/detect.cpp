@@ -1452,17 +1452,16 @@ CorridorDetection layoutGuess(const CorridorDetection& edges, const LayoutFit& f
   if (!isCorridorEndAspect(farWallAspect(guess))) return edges;
   guess.notFoundReason.clear();
   guess.doubts.clear();
-  doubt(guess, boundariesFound ? "the far wall is where the layout network put it; the photo's edges do not bear it out, "
-                                 "and alone found the room's four boundaries but no far wall"
-                               : "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone "
-                                 "found no box: " + edges.notFoundReason);
+  doubt(guess, "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone found " +
+                   (boundariesFound ? std::string("the room's four boundaries but no far wall") : "no box: " + edges.notFoundReason));
   return guess;
 }
 
 // Detection by the photo's edges (findCorridorByEdges); where that is unsure, the room's
 // layout as the layout network sees it (layout_net.h) makes it sure where the two agree,
-// and starts a rough box's fit where the edges found none, or is itself the guess where
-// they found the room's boundaries but no far wall (layoutGuess).
+// and starts a rough box's fit where the edges found none, or, where that fit fails, is
+// itself the guess (layoutGuess: where the photo looks like a room to it, or the edges
+// found the room's boundaries but no far wall).
 Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
                                        const std::vector<LineSegment>& segments, const DetectOptions& options,
                                        glm::dvec2 pp) {

@@ -47,6 +47,14 @@ struct Ray {
   float dx, dy, dz;
 };
 
+// The surface a ray meets first, from when it meets the far plane, the side wall it
+// heads for (the left one where `toLeft`) and the floor or ceiling it heads for.
+int firstSurface(double tFar, double tSide, double tFloorCeiling, bool toLeft, bool toFloor) {
+  if (tFar <= tSide && tFar <= tFloorCeiling) return kFar;
+  if (tSide <= tFloorCeiling) return toLeft ? kLeft : kRight;
+  return toFloor ? kFloor : kCeiling;
+}
+
 // Which surface of the box (left, right, bottom, top on the far plane z = 1) a ray
 // meets first.
 int labelOf(const Ray& r, double left, double right, double bottom, double top) {
@@ -54,9 +62,7 @@ int labelOf(const Ray& r, double left, double right, double bottom, double top) 
   const double tFar = r.dz > 1e-9 ? 1.0 / r.dz : kNever;
   const double tSide = r.dx < -1e-12 ? left / r.dx : r.dx > 1e-12 ? right / r.dx : kNever;
   const double tFloorCeiling = r.dy < -1e-12 ? bottom / r.dy : r.dy > 1e-12 ? top / r.dy : kNever;
-  if (tFar <= tSide && tFar <= tFloorCeiling) return kFar;
-  if (tSide <= tFloorCeiling) return r.dx < 0 ? kLeft : kRight;
-  return r.dy < 0 ? kFloor : kCeiling;
+  return firstSurface(tFar, tSide, tFloorCeiling, r.dx < 0, r.dy < 0);
 }
 
 float squash(double x) { return static_cast<float>(std::atan(2.0 * x) / (0.5 * CV_PI)); }
@@ -170,9 +176,7 @@ class BoxLabeller {
     if (!s.away) return labelOf(rays_[i], box[0], box[1], box[2], box[3]);
     const double side = std::isinf(s.sideOverFar) ? s.sideOverFar : (s.toLeft ? box[0] : box[1]) * s.sideOverFar;
     const double flat = std::isinf(s.flatOverFar) ? s.flatOverFar : (s.toFloor ? box[2] : box[3]) * s.flatOverFar;
-    if (1.0 <= side && 1.0 <= flat) return kFar;
-    if (side <= flat) return s.toLeft ? kLeft : kRight;
-    return s.toFloor ? kFloor : kCeiling;
+    return firstSurface(1.0, side, flat, s.toLeft, s.toFloor);
   }
 
  private:

@@ -8,9 +8,10 @@
 // points), so it only has to say where the box's sides are. They see the room's layout
 // behind a person or a cabinet, where the edges do not show, to a few pixels on scenes
 // like those they learnt from, and can be tens of pixels off on others (a door at the far
-// end taken for the far wall): detection uses the box only to confirm an answer of the
-// edges, or as a person's rough box to be fitted to the edges where those found none
-// (detect.cpp, findCorridor).
+// end taken for the far wall): detection uses the box to confirm an answer of the
+// edges, as a person's rough box to be fitted to the edges where those found none, and,
+// where that fit fails too, as an unsure guess of its own (detect.cpp, findCorridor and
+// layoutGuess).
 #pragma once
 
 #include <array>
