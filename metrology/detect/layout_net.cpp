@@ -86,6 +86,14 @@ struct View {
   std::vector<double> farU, farV;                 // where the network's likeliest label is the far wall
 };
 
+}  // namespace
+
+struct LayoutLooks {
+  View whole, zoomed;
+};
+
+namespace {
+
 View look(cv::dnn::Net& net, const cv::Mat& bgr, double workScale, double x0, double y0, double zoom, double focalPx,
           glm::dvec2 principalPx, const CorridorAxes& axes) {
   // The view's colours: area-averaged where it shrinks, bilinear where it enlarges.
@@ -188,15 +196,19 @@ class BoxLabeller {
   std::vector<Scaled> scaled_;
 };
 
+// The sum over the view's pixels of the log-probability of the label `box` gives each.
+double summedScore(const View& view, const BoxLabeller& labeller, const std::array<double, 4>& box) {
+  double sum = 0;
+  for (size_t i = 0; i < view.rays.size(); ++i) sum += view.logp[i][labeller.label(i, box)];
+  return sum;
+}
+
 // The box (left, right, bottom, top) whose labels the view finds likeliest: coordinate
 // search from `box`, steps halving.
 LayoutFit fitBox(const View& view, std::array<double, 4> box) {
   const BoxLabeller labeller(view.rays);
   const auto score = [&](const std::array<double, 4>& b) {
-    if (!(b[0] < b[1] && b[2] < b[3])) return -1e300;
-    double sum = 0;
-    for (size_t i = 0; i < view.rays.size(); ++i) sum += view.logp[i][labeller.label(i, b)];
-    return sum;
+    return b[0] < b[1] && b[2] < b[3] ? summedScore(view, labeller, b) : -1e300;
   };
   double best = score(box);
   const std::array<double, 2> span = {std::max(box[1] - box[0], 0.02), std::max(box[3] - box[2], 0.02)};
@@ -230,11 +242,13 @@ std::optional<LayoutFit> fitLayoutOrThrow(const cv::Mat& bgr, double workScale, 
                                           const CorridorAxes& axes) {
   // The whole photo first, then the far wall's neighbourhood zoomed.
   const double shrink = static_cast<double>(kInputSide) / std::max(bgr.cols, bgr.rows);
-  const View whole = look(wholeNet(), bgr, workScale, 0, 0, shrink, focalPx, principalPx, axes);
+  auto looks = std::make_shared<LayoutLooks>();
+  const View& whole = looks->whole = look(wholeNet(), bgr, workScale, 0, 0, shrink, focalPx, principalPx, axes);
   if (whole.farU.size() < 4) return std::nullopt;
   LayoutFit fit = fitBox(whole, {percentile(whole.farU, 0.02), percentile(whole.farU, 0.98), percentile(whole.farV, 0.02),
                                  percentile(whole.farV, 0.98)});
   fit.wholeScore = fit.score;
+  fit.looks = looks;
   // The far wall's corners in working pixels, and a view around them 2.5 times their extent.
   glm::dvec2 lo(1e300), hi(-1e300);
   for (const glm::dvec2 uv : {glm::dvec2(fit.left, fit.top), {fit.right, fit.top}, {fit.left, fit.bottom}, {fit.right, fit.bottom}}) {
@@ -244,15 +258,37 @@ std::optional<LayoutFit> fitLayoutOrThrow(const cv::Mat& bgr, double workScale, 
   if (!(std::isfinite(lo.x) && std::isfinite(hi.x) && std::isfinite(lo.y) && std::isfinite(hi.y))) return fit;
   const double side = std::max(std::max(hi.x - lo.x, hi.y - lo.y) / kNeighbourhoodShare, kMinNeighbourhoodPx * workScale);
   const glm::dvec2 centre = 0.5 * (lo + hi);
-  const View zoomed = look(zoomNet(), bgr, workScale, centre.x - 0.5 * side, centre.y - 0.5 * side, kInputSide / side,
-                           focalPx, principalPx, axes);
+  View zoomed = look(zoomNet(), bgr, workScale, centre.x - 0.5 * side, centre.y - 0.5 * side, kInputSide / side, focalPx,
+                     principalPx, axes);
   if (zoomed.rays.size() < 16) return fit;
   LayoutFit closer = fitBox(zoomed, {fit.left, fit.right, fit.bottom, fit.top});
   closer.wholeScore = fit.wholeScore;
+  looks->zoomed = std::move(zoomed);
+  closer.looks = looks;
   return closer;
 }
 
 }  // namespace
+
+std::optional<double> boxScore(const LayoutFit& fit, const std::array<glm::dvec2, 4>& farPx, double focalPx,
+                               glm::dvec2 principalPx, const CorridorAxes& axes, bool zoomed) {
+  if (!fit.looks) return std::nullopt;
+  const View& view = zoomed ? fit.looks->zoomed : fit.looks->whole;
+  if (view.rays.empty()) return std::nullopt;
+  // Each corner's ray on the far plane; each side of the box where its two corners put
+  // it on average (an answer of the edges is a box up to its fitting's pixel or so).
+  std::array<glm::dvec2, 4> uv{};
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec3 d((farPx[k].x - principalPx.x) / focalPx, (farPx[k].y - principalPx.y) / focalPx, 1.0);
+    const double z = glm::dot(d, axes.away);
+    if (!(z > 1e-9)) return std::nullopt;
+    uv[k] = glm::dvec2(glm::dot(d, axes.right), glm::dot(d, axes.up)) / z;
+  }
+  const std::array<double, 4> box = {0.5 * (uv[0].x + uv[2].x), 0.5 * (uv[1].x + uv[3].x), 0.5 * (uv[2].y + uv[3].y),
+                                     0.5 * (uv[0].y + uv[1].y)};
+  if (!(box[0] < box[1] && box[2] < box[3])) return std::nullopt;
+  return summedScore(view, BoxLabeller(view.rays), box) / static_cast<double>(view.rays.size());
+}
 
 CorridorAxes corridorAxes(glm::dvec3 horizontal, glm::dvec3 vertical, glm::dvec3 corridor, double focalPx,
                           glm::dvec2 principalPx) {

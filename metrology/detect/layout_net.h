@@ -10,11 +10,13 @@
 // like those they learnt from, and can be tens of pixels off on others (a door at the far
 // end taken for the far wall): detection uses the box to confirm an answer of the
 // edges, as a person's rough box to be fitted to the edges where those found none, and,
-// where that fit fails too, as an unsure guess of its own (detect.cpp, findCorridor and
-// layoutGuess).
+// where that fit fails too, as an unsure guess of its own, and in place of an unsure
+// answer of the edges whose far wall it finds far less likely than its own box (boxScore;
+// detect.cpp: findCorridor, layoutGuess and layoutOverEdges).
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -45,7 +47,15 @@ struct LayoutFit {
   // tests' drawn road and outdoor scene and on camera.png -0.47 to -0.74; on York Urban's
   // streets, lined by buildings like a corridor's walls, as high as -0.19.
   double wholeScore = 0;
+  // What the networks saw (for boxScore).
+  std::shared_ptr<const struct LayoutLooks> looks;
 };
+
+// The mean log-probability per pixel of the labels that the box with far corners
+// `farPx` (P1..P4, full-resolution pixels) gives, in the whole photo's look (`zoomed`
+// false) or the far wall's neighbourhood's.
+std::optional<double> boxScore(const LayoutFit& fit, const std::array<glm::dvec2, 4>& farPx, double focalPx,
+                               glm::dvec2 principalPx, const CorridorAxes& axes, bool zoomed);
 
 // The layout of `bgr` (CV_8UC3, any size: the photo scaled by `workScale`, pixel centres mapping as WorkingImage's do, to the
 // photo's full-resolution pixels, in which `focalPx` and `principalPx` are given).
