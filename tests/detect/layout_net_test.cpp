@@ -18,6 +18,7 @@ using testing::renderCorridor;
 struct Looked {
   std::optional<LayoutFit> fit;
   std::optional<std::array<glm::dvec2, 8>> corners;
+  CorridorAxes axes;
 };
 
 Looked look(const testing::SyntheticCorridor& scene, double focalPx) {
@@ -29,6 +30,7 @@ Looked look(const testing::SyntheticCorridor& scene, double focalPx) {
   if (!d.ok() || !d->hasVanishingPoints) return {};
   const CorridorAxes axes = corridorAxes(d->horizontal.point, d->vertical.point, d->corridor.point, focalPx, scene.principalPoint);
   Looked out;
+  out.axes = axes;
   out.fit = fitLayout(scene.image, 1.0, focalPx, scene.principalPoint, axes);
   if (out.fit) out.corners = layoutCorners(*out.fit, focalPx, scene.principalPoint, axes, scene.image.size(), 6.0);
   return out;
@@ -84,6 +86,46 @@ TEST(LayoutNet, NearCornersLieOnTheRaysThroughTheFarOnesInsideThePhoto) {
     closest = std::min({closest, c[k].x - 6.0, c[k].y - 6.0, scene.image.cols - 7.0 - c[k].x, scene.image.rows - 7.0 - c[k].y});
   }
   EXPECT_LT(closest, 0.01);
+}
+
+// boxScore, which weighs an answer of the edges against the network's own box: the
+// network's box scores what its fit scored, and a box moved off it scores less. (In the
+// far wall's neighbourhood, where the box was fitted; in the whole photo, a box moved
+// well aside: these scenes' far wall is larger than the door the network takes for it,
+// so a larger box is no test there.)
+TEST(LayoutNet, ABoxMovedOffTheNetworksOwnScoresLess) {
+  CorridorSpec spec;
+  spec.yawDeg = 4, spec.pitchDeg = -2;
+  const auto scene = renderCorridor(spec);
+  const Looked looked = look(scene, spec.focalPx);
+  ASSERT_TRUE(looked.fit && looked.corners);
+  const auto& c = *looked.corners;
+  const std::array<glm::dvec2, 4> own = {c[0], c[1], c[2], c[3]};
+  const auto score = [&](const std::array<glm::dvec2, 4>& far, bool zoomed) {
+    return boxScore(*looked.fit, far, spec.focalPx, scene.principalPoint, looked.axes, zoomed);
+  };
+  const auto ownNear = score(own, true), ownWhole = score(own, false);
+  ASSERT_TRUE(ownNear && ownWhole);
+  // (Not to the last digit: the corners are cast through the three vanishing directions
+  // as found, which are not exactly orthogonal, and read back by the network's own
+  // coordinates, the rays' components along them.)
+  EXPECT_NEAR(*ownNear, looked.fit->score, 0.01);
+  EXPECT_LE(*ownWhole, 0.0);
+  const glm::dvec2 middle = 0.25 * (c[0] + c[1] + c[2] + c[3]);
+  for (const double times : {0.7, 1.4}) {
+    std::array<glm::dvec2, 4> scaled{};
+    for (int k = 0; k < 4; ++k) scaled[k] = middle + times * (own[k] - middle);
+    const auto moved = score(scaled, true);
+    ASSERT_TRUE(moved);
+    EXPECT_LT(*moved, *ownNear - 0.05) << times << " times as large";
+  }
+  std::array<glm::dvec2, 4> aside{};
+  for (int k = 0; k < 4; ++k) aside[k] = own[k] + glm::dvec2(0.25 * scene.image.cols, 0);
+  const auto movedWhole = score(aside, false);
+  ASSERT_TRUE(movedWhole);
+  EXPECT_LT(*movedWhole, *ownWhole - 0.05);
+  // A fit that did not look (made up, not fitLayout's) scores nothing.
+  EXPECT_FALSE(boxScore(LayoutFit{}, own, spec.focalPx, scene.principalPoint, looked.axes, true));
 }
 
 TEST(LayoutNet, APlainGreyPhotoGivesNoNumbersThatAreNotNumbers) {
