@@ -109,13 +109,6 @@ constexpr double kLayoutPrefersBy = 0.3;
 // it and only 0.03 in the whole photo (DetectParts.ABoundaryThatDoesNotShowIsWhereTheOtherThreePutIt);
 // on TUNE 450-599 the answers it mends there differ by 0.18 to 3.1.
 constexpr double kLayoutAloneWholeBy = 0.1;
-// A sure answer of the edges whose far wall the network finds less likely than its own
-// box by this or more near the far wall (and less likely in the whole photo too), on a
-// photo that looks like a room to it, is a guess. TUNE 450-599 and seeds 600-1399, the 93
-// sure answers the network could score: the two wrong by more than 2 px that it sees
-// (589, a glazed end with its reflection, 53 px off: 0.24 less likely; 1394, 100 px off:
-// 1.24) and none of the 91 right ones (the least likely 0.15 less).
-constexpr double kLayoutDoubtsSureBy = 0.2;
 // The whole photo's fit (LayoutFit::wholeScore) at or above which the network's box is a
 // guess whatever the edges' reason for finding none: the photo looks like a room to the
 // network. Seeds 600-1399 (neither trained nor tuned on before): 98% of the rooms above
@@ -1548,26 +1541,6 @@ std::optional<CorridorDetection> layoutOverEdges(const CorridorDetection& edges,
   return layoutAsPut(edges, layout, why + "its box as it put it instead (the edges do not bear it out)");
 }
 
-// Why the network doubts a sure answer of the edges (`edges`): its far wall
-// kLayoutDoubtsSureBy less likely than the network's own box near it and less likely in
-// the whole photo, on a photo that looks like a room to it; nullopt where it does not.
-std::optional<std::string> layoutDoubtsSure(const CorridorDetection& edges, const LayoutFit& fit,
-                                            const std::array<glm::dvec2, 8>& layout, double focalPx, glm::dvec2 pp,
-                                            const CorridorAxes& axes) {
-  if (!(fit.wholeScore >= kLayoutRoomScore)) return std::nullopt;
-  const auto score = [&](const std::array<glm::dvec2, 8>& c, bool zoomed) {
-    return boxScore(fit, {c[P1], c[P2], c[P3], c[P4]}, focalPx, pp, axes, zoomed);
-  };
-  const std::array<glm::dvec2, 8> ours = cornerPixels(edges);
-  const auto ourNear = score(ours, true), theirNear = score(layout, true);
-  const auto ourWhole = score(ours, false), theirWhole = score(layout, false);
-  if (!ourNear || !theirNear || !ourWhole || !theirWhole) return std::nullopt;
-  if (!(*ourNear <= *theirNear - kLayoutDoubtsSureBy && *ourWhole < *theirWhole)) return std::nullopt;
-  char figures[160];
-  std::snprintf(figures, sizeof figures, "log-probability per pixel %.2f against %.2f for its own box", *ourNear, *theirNear);
-  return "the far wall found is unlikely to the layout network (" + std::string(figures) + ")";
-}
-
 // Detection by the photo's edges (findCorridorByEdges); where that is unsure, the room's
 // layout as the layout network sees it (layout_net.h) makes it sure where the two agree,
 // takes the place of the edges' answer where it finds that answer far less likely than
@@ -1578,7 +1551,7 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
                                        const std::vector<LineSegment>& segments, const DetectOptions& options,
                                        glm::dvec2 pp) {
   auto byEdges = findCorridorByEdges(photo, work, segments, options, pp);
-  if (options.hintPx || !byEdges || !byEdges->hasVanishingPoints) return byEdges;
+  if (options.hintPx || !byEdges || !byEdges->hasVanishingPoints || (byEdges->found && byEdges->confident)) return byEdges;
   const CorridorAxes axes =
       corridorAxes(byEdges->horizontal.point, byEdges->vertical.point, byEdges->corridor.point, byEdges->focalPx, pp);
   const auto fit = fitLayout(work.bgr, work.scale, byEdges->focalPx, pp, axes);
@@ -1586,16 +1559,6 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   const auto layout = layoutCorners(*fit, byEdges->focalPx, pp, axes, photo.size(),
                                     kNearMarginOfShortSide * std::min(photo.size().width, photo.size().height));
   if (!layout) return byEdges;
-  // A sure answer of the edges stays sure unless the network finds its far wall far less
-  // likely than its own box (then a guess, its corners kept: a far wall taken with its
-  // reflection in a glossy floor, 100 px off, has passed every check of the edges).
-  if (byEdges->found && byEdges->confident) {
-    if (const auto doubt = layoutDoubtsSure(*byEdges, *fit, *layout, byEdges->focalPx, pp, axes)) {
-      byEdges->confident = false;
-      byEdges->doubts.push_back(*doubt);
-    }
-    return byEdges;
-  }
   // An unsure answer of the edges whose far wall the network puts within a few pixels
   // of it: two independent looks at the room agree.
   if (byEdges->found && farWallDistancePx(cornerPixels(*byEdges), *layout) <= kLayoutAgreesPx) {
