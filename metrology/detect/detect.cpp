@@ -1524,11 +1524,12 @@ std::optional<CorridorDetection> layoutOverEdges(const CorridorDetection& edges,
   const auto ourNear = score(ours, true);
   // (The network's own box is the likeliest near it: where the edges' is not far less
   // likely than that one, it is not far less likely than the fitted one; no fit needed.)
-  if (const auto best = score(layout, true); !ourNear || !best || *ourNear > *best - kLayoutPrefersBy) return std::nullopt;
+  const auto layoutNear = score(layout, true);
+  if (!ourNear || !layoutNear || *ourNear > *layoutNear - kLayoutPrefersBy) return std::nullopt;
   const Result<CorridorDetection> fitted = fitToEdges();
   const bool holds = fitHolds(fitted) && farWallMedianDistancePx(cornerPixels(*fitted), layout) <= kLayoutFitStraysPx;
   const std::array<glm::dvec2, 8> theirs = holds ? cornerPixels(*fitted) : layout;
-  const auto theirNear = score(theirs, true);
+  const auto theirNear = holds ? score(theirs, true) : layoutNear;
   const auto ourWhole = score(ours, false), theirWhole = score(theirs, false);
   if (!ourNear || !theirNear || !ourWhole || !theirWhole) return std::nullopt;
   if (!(*ourNear <= *theirNear - kLayoutPrefersBy && *ourWhole < *theirWhole - (holds ? 0.0 : kLayoutAloneWholeBy))) {

@@ -86,6 +86,14 @@ struct View {
   std::vector<double> farU, farV;                 // where the network's likeliest label is the far wall
 };
 
+// The ray through a full-resolution pixel in the corridor's frame: its components across
+// the corridor, up and along it (the network's coordinates; the far plane's where divided
+// by the last).
+glm::dvec3 corridorRay(glm::dvec2 fullPx, double focalPx, glm::dvec2 principalPx, const CorridorAxes& axes) {
+  const glm::dvec3 d((fullPx.x - principalPx.x) / focalPx, (fullPx.y - principalPx.y) / focalPx, 1.0);
+  return {glm::dot(d, axes.right), glm::dot(d, axes.up), glm::dot(d, axes.away)};
+}
+
 }  // namespace
 
 struct LayoutLooks {
@@ -116,10 +124,8 @@ View look(cv::dnn::Net& net, const cv::Mat& bgr, double workScale, double x0, do
     for (int x = 0; x < kInputSide; ++x) {
       const glm::dvec2 working = glm::dvec2(x0, y0) + (glm::dvec2(x, y) + 0.5) / zoom - 0.5;
       if (!(working.x >= -0.5 && working.y >= -0.5 && working.x <= bgr.cols - 0.5 && working.y <= bgr.rows - 0.5)) continue;
-      const glm::dvec2 full = (working + 0.5) / workScale - 0.5;
-      const glm::dvec3 d((full.x - principalPx.x) / focalPx, (full.y - principalPx.y) / focalPx, 1.0);
-      const Ray r{static_cast<float>(glm::dot(d, axes.right)), static_cast<float>(glm::dot(d, axes.up)),
-                  static_cast<float>(glm::dot(d, axes.away))};
+      const glm::dvec3 along = corridorRay((working + 0.5) / workScale - 0.5, focalPx, principalPx, axes);
+      const Ray r{static_cast<float>(along.x), static_cast<float>(along.y), static_cast<float>(along.z)};
       view.rays.push_back(r);
       pixelOf.push_back(y * kInputSide + x);
       const cv::Vec3b c = patch.at<cv::Vec3b>(y, x);
@@ -279,10 +285,9 @@ std::optional<double> boxScore(const LayoutFit& fit, const std::array<glm::dvec2
   // it on average (an answer of the edges is a box up to its fitting's pixel or so).
   std::array<glm::dvec2, 4> uv{};
   for (int k = 0; k < 4; ++k) {
-    const glm::dvec3 d((farPx[k].x - principalPx.x) / focalPx, (farPx[k].y - principalPx.y) / focalPx, 1.0);
-    const double z = glm::dot(d, axes.away);
-    if (!(z > 1e-9)) return std::nullopt;
-    uv[k] = glm::dvec2(glm::dot(d, axes.right), glm::dot(d, axes.up)) / z;
+    const glm::dvec3 c = corridorRay(farPx[k], focalPx, principalPx, axes);
+    if (!(c.z > 1e-9)) return std::nullopt;
+    uv[k] = glm::dvec2(c.x, c.y) / c.z;
   }
   const std::array<double, 4> box = {0.5 * (uv[0].x + uv[2].x), 0.5 * (uv[1].x + uv[3].x), 0.5 * (uv[2].y + uv[3].y),
                                      0.5 * (uv[0].y + uv[1].y)};
