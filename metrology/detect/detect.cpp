@@ -955,12 +955,22 @@ std::vector<SkirtingPlace> skirtingBelow(const WorkingImage& work, glm::dvec2 vp
   return places;
 }
 
-// Two far corners `a`, `b` of `d` moved to `pa`, `pb` (working pixels), and P5..P8 along
-// the boundaries through them again where they are at the nearest depth inside the
-// photo; false, `d` untouched, where that depth or a corner cannot be had.
-bool moveFarSide(CorridorDetection& d, const WorkingImage& work, cv::Size size, int a, int b, glm::dvec2 pa, glm::dvec2 pb) {
+// The far wall's foot (`top` false) or top of `d` moved `shift` working pixels away from
+// the wall along its sides (farWork: its corners in working pixels), and P5..P8 along the
+// boundaries through the new corners where they are at the nearest depth inside the photo;
+// false, `d` untouched, where that depth or a corner cannot be had.
+bool moveFarSide(CorridorDetection& d, const WorkingImage& work, const Quad& farWork, bool top, double shift,
+                 cv::Size size) {
+  const glm::dvec3 horizontal = work.toWorking(d.horizontal.point), vertical = work.toWorking(d.vertical.point);
+  // The side's left corner moves along the left side; its right one is where the
+  // horizontal through it meets the right side.
+  const int left = top ? 0 : 2, right = top ? 1 : 3;
+  const glm::dvec2 moved = farWork[left] + shift * directionTowards(vertical, farWork[2 - left], {0, top ? -1.0 : 1.0});
+  const auto other =
+      intersect(lineThrough(homogeneous(moved), horizontal), lineThrough(homogeneous(farWork[top ? 3 : 1]), vertical));
+  if (!other) return false;
   std::array<glm::dvec2, 8> corners = cornerPixels(d);
-  corners[a] = work.toFull(pa), corners[b] = work.toFull(pb);
+  corners[left] = work.toFull(moved), corners[right] = work.toFull(*other);
   if (d.nearDepth == NearDepth::kImageEdge) {
     const auto near = nearestSectionInside(d, {corners[P1], corners[P2], corners[P3], corners[P4]}, size);
     if (!near) return false;
@@ -1015,10 +1025,7 @@ void belowSkirting(CorridorDetection& d, const WorkingImage& work, glm::dvec2 vp
                  " px below the far wall's foot: the foot found may be the board's top");
     // Now a guess: it moves as a guess does (below), where the places agree.
   }
-  if (!shift) return;
-  const glm::dvec2 p3 = farWork[2] + *shift * directionTowards(vertical, farWork[0], {0, 1});
-  const auto p4 = intersect(lineThrough(homogeneous(p3), horizontal), lineThrough(homogeneous(farWork[1]), vertical));
-  if (!p4 || !moveFarSide(d, work, size, P3, P4, p3, *p4)) return;
+  if (!shift || !moveFarSide(d, work, farWork, /*top=*/false, *shift, size)) return;
   if (!d.confident) doubt(d, "the far wall's foot was taken below a skirting board, at the board's foot");
 }
 
@@ -1041,10 +1048,7 @@ void aboveCeilingBand(CorridorDetection& d, const WorkingImage& work, glm::dvec2
     moves.push_back(place.move);
   }
   const std::optional<double> shift = skirtingShift(moves);
-  if (!shift) return;
-  const glm::dvec2 p1 = farWork[0] + *shift * directionTowards(vertical, farWork[2], {0, -1});
-  const auto p2 = intersect(lineThrough(homogeneous(p1), horizontal), lineThrough(homogeneous(farWork[3]), vertical));
-  if (!p2 || !moveFarSide(d, work, size, P1, P2, p1, *p2)) return;
+  if (!shift || !moveFarSide(d, work, farWork, /*top=*/true, *shift, size)) return;
   doubt(d, "the far wall's top was taken at the upper edge of a band under the ceiling");
 }
 
