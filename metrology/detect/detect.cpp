@@ -115,6 +115,12 @@ constexpr double kLayoutAloneWholeBy = 0.1;
 // it, every "no corridor" with the box in view (15) among them; the tests' drawn road,
 // outdoor scene and camera.png, and the York Urban streets that reach the guess, below it.
 constexpr double kLayoutRoomScore = -0.25;
+// A person's rough box fitted to the photo (detect --hint) and detection's own answer
+// agree where their far corners lie within this of each other (fitRoughBox): the fit's
+// corners then stand, with detection's verdict. (Detection's own near corners, on rays
+// through far corners a fifth of a pixel off, can lie 2 px across the boundary ten times
+// farther out: corridor_e's, against 0.3 px for the fit's.)
+constexpr double kHintAgreesPx = 1.0;
 // P5..P8 at the nearest cross-section this share of the photo's short side inside it.
 constexpr double kNearMarginOfShortSide = 0.01;
 // A corridor's end is no more than this many times as high as it is wide, nor as wide as
@@ -511,6 +517,26 @@ constexpr std::array<int, 4> kVerticalOf = {kLeftSide, kRightSide, kLeftSide, kR
 // floor before a glazed end can pass for a board, TUNE 544).
 constexpr const char* kFootAtBandFoot = "the far wall's foot was taken at the foot of a band along the walls, a skirting board's";
 
+// The depth of P5..P8 along `family` (the boundaries from the corridor's vanishing point
+// through the far corners, the photo's pixels; the far wall at `farT`): the nearest
+// section whose four corners lie inside the photo or, where a person put them
+// (`nearHint`, P7 P8 P5 P6) beyond `reachPx` of it, the section nearest theirs.
+std::pair<double, NearDepth> nearSectionDepth(const CrossSectionFamily& family, double farT, cv::Size size,
+                                              const std::optional<Quad>& nearHint, double reachPx) {
+  const double t = family.largestInside(size, kNearMarginOfShortSide * std::min(size.width, size.height));
+  if (!nearHint) return {t, NearDepth::kImageEdge};
+  // The depth the person gave, unless the section nearest the photo's edge is within
+  // reach of it (the convention a careful person follows too).
+  const double given = nearestSection(family, *nearHint, farT + 1.0, 2.0 * t);
+  const auto edge = family.at(t), atGiven = family.at(given);
+  double apart = std::numeric_limits<double>::infinity();
+  if (edge && atGiven) {
+    apart = 0;
+    for (int k = 0; k < 4; ++k) apart = std::max(apart, glm::length((*edge)[k] - (*nearHint)[k]));
+  }
+  return apart > reachPx ? std::pair{given, NearDepth::kGiven} : std::pair{t, NearDepth::kImageEdge};
+}
+
 // From a far wall found on the working copy (corners in working pixels, `farT` its
 // depth in the cross-section family's terms) to the detection: the far wall's sides
 // and the boundaries beyond it fitted at full resolution, then P5..P8, and the
@@ -724,20 +750,8 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
     d.nearDepth = NearDepth::kMarkedCrossSection;
   } else {
     const CrossSectionFamily fullFamily(vp, d.horizontal.point, d.vertical.point, throughCorners);
-    double t = fullFamily.largestInside(size, kNearMarginOfShortSide * std::min(size.width, size.height));
-    d.nearDepth = NearDepth::kImageEdge;
-    if (nearHint) {
-      // The depth the person gave, unless the section nearest the photo's edge is within
-      // reach of it (the convention a careful person follows too).
-      const double given = nearestSection(fullFamily, *nearHint, glm::length(far.corners[2] - vp) + 1.0, 2.0 * t);
-      const auto edge = fullFamily.at(t), atGiven = fullFamily.at(given);
-      double apart = std::numeric_limits<double>::infinity();
-      if (edge && atGiven) {
-        apart = 0;
-        for (int k = 0; k < 4; ++k) apart = std::max(apart, glm::length((*edge)[k] - (*nearHint)[k]));
-      }
-      if (apart > s.options.hintReachPx) t = given, d.nearDepth = NearDepth::kGiven;
-    }
+    const auto [t, depth] = nearSectionDepth(fullFamily, glm::length(far.corners[2] - vp), size, nearHint, s.options.hintReachPx);
+    d.nearDepth = depth;
     auto q = fullFamily.at(t);
     if (!q || t <= glm::length(far.corners[2] - vp)) return makeError("no room between the far wall and the photo's edge");
     for (int k = 0; k < 4; ++k) {
@@ -845,16 +859,38 @@ Quad farInWorking(const CorridorDetection& d, const WorkingImage& work) {
   return far;
 }
 
-// The nearest cross-section whose four corners lie inside the photo (1% of its short side
-// from the border), along the boundaries from the corridor's vanishing point through
-// the far corners `far` (P1..P4, photo pixels): its corners in the order P7, P8, P5, P6.
-std::optional<Quad> nearestSectionInside(const CorridorDetection& d, const Quad& far, cv::Size size) {
+// The cross-sections along the boundaries from the corridor's vanishing point through
+// the far corners `far` (P1..P4, photo pixels).
+CrossSectionFamily sectionsThroughFarWall(const CorridorDetection& d, const Quad& far) {
   const glm::dvec2 vp = d.corridor.pixel();
   RecedingBoundaries rays;
   const std::array<glm::dvec2, kBoundaryCount> farCorner = {far[P3], far[P4], far[P1], far[P2]};  // floor-left ... ceiling-right
   for (int b = 0; b < kBoundaryCount; ++b) rays.angle[b] = std::atan2(farCorner[b].y - vp.y, farCorner[b].x - vp.x);
-  const CrossSectionFamily family(vp, d.horizontal.point, d.vertical.point, rays);
+  return CrossSectionFamily(vp, d.horizontal.point, d.vertical.point, rays);
+}
+
+// The nearest cross-section whose four corners lie inside the photo (1% of its short side
+// from the border), along the boundaries through the far corners `far`: its corners in
+// the order P7, P8, P5, P6.
+std::optional<Quad> nearestSectionInside(const CorridorDetection& d, const Quad& far, cv::Size size) {
+  const CrossSectionFamily family = sectionsThroughFarWall(d, far);
   return family.at(family.largestInside(size, kNearMarginOfShortSide * std::min(size.width, size.height)));
+}
+
+// `d` (an answer of detection's own) with P5..P8 on its boundaries at the depth a person
+// put theirs (`hint`, P5..P8 of it; nearSectionDepth), each corner keeping its confidence.
+std::optional<CorridorDetection> withNearAsPut(CorridorDetection d, const std::array<glm::dvec2, 8>& hint, cv::Size size,
+                                               double reachPx) {
+  const CrossSectionFamily family =
+      sectionsThroughFarWall(d, {d.corners[P1].px, d.corners[P2].px, d.corners[P3].px, d.corners[P4].px});
+  const double farT = glm::length(d.corners[P3].px - d.corridor.pixel());
+  const auto [t, depth] = nearSectionDepth(family, farT, size, Quad{hint[P7], hint[P8], hint[P5], hint[P6]}, reachPx);
+  const auto near = family.at(t);
+  if (!near || t <= farT) return std::nullopt;
+  d.corners[P7].px = (*near)[0], d.corners[P8].px = (*near)[1], d.corners[P5].px = (*near)[2], d.corners[P6].px = (*near)[3];
+  if (!allFinite(d.corners)) return std::nullopt;
+  d.nearDepth = depth;
+  return d;
 }
 
 // A skirting board below the far wall's foot found: the foot found is the board's top
@@ -1141,6 +1177,7 @@ CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const st
   const double tGiven = nearestSection(family, farGiven, 1.0, 2.0 * glm::length(farGiven[2] - s.vpWork) + 2.0);
   std::optional<CrossSectionMatch> far;
   if (*std::min_element(boundaries.edgeCoverage.begin(), boundaries.edgeCoverage.end()) < kSeenBoundaryCoverage) {
+    d.hintBoundaryUnseen = true;
     far = fitFarWallNear(work, s.vpWork, work.toWorking(d.horizontal.point), work.toWorking(d.vertical.point), farGiven,
                          reach * work.scale);
   }
@@ -1585,6 +1622,47 @@ std::optional<CorridorDetection> layoutOverEdges(const CorridorDetection& edges,
   return layoutAsPut(edges, layout, why + "its box as it put it instead (the edges do not bear it out)");
 }
 
+Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
+                                       const std::vector<LineSegment>& segments, const DetectOptions& options,
+                                       glm::dvec2 pp);
+
+// A person's rough box (options.hintPx) fitted to the photo's edges (fromHint), weighed
+// against detection's own answer where that answer's far corners each lie within reach
+// of the person's: where the two far walls agree within kHintAgreesPx, the fit's corners
+// with detection's verdict (sure only where detection is); where the fit found nothing
+// (the person's corners came back as put) or disagrees, detection's answer, with P5..P8
+// at the person's depth (withNearAsPut): it looks at the whole photo (the far wall's
+// alternatives, the layout network), the fit only at the edges near each line put. But
+// where a receding boundary did not show near the person's line (a white ceiling on
+// white walls), the fit's far wall, fitted side by side, stays, doubted: detection hangs
+// its far wall on those boundaries (DetectHint.AFarWallWhoseCeilingEdgesDoNotShowIsFittedSideBySide:
+// detection's own answer 16 px off on 9 of its 30 rough boxes). Seeds 600-1399, one rough
+// box per scene: far wall right 53.0% -> 63.2% clean, 48.8% -> 58.4% noisy.
+Result<CorridorDetection> fitRoughBox(const PinholeView& photo, const WorkingImage& work,
+                                      const std::vector<LineSegment>& segments, const DetectOptions& options, glm::dvec2 pp) {
+  auto fitted = findCorridorByEdges(photo, work, segments, options, pp);
+  if (!options.hintWeighsDetection || !fitted || !fitted->hasVanishingPoints) return fitted;
+  DetectOptions alone = options;
+  alone.hintPx.reset();
+  auto own = findCorridor(photo, work, segments, alone, pp);
+  if (!own || !own->found || farWallDistancePx(cornerPixels(*own), *options.hintPx) > options.hintReachPx) return fitted;
+  if (fitHolds(fitted)) {
+    const double apart = farWallDistancePx(cornerPixels(*own), cornerPixels(*fitted));
+    if (apart <= kHintAgreesPx) {
+      fitted->confident = own->confident;
+      fitted->doubts = own->doubts;
+      return fitted;
+    }
+    if (fitted->hintBoundaryUnseen) {
+      doubt(*fitted, "the far wall detection finds on its own lies " + std::to_string(std::lround(apart)) + " px from it");
+      return fitted;
+    }
+  }
+  if (!options.hintNearDepthGiven) return own;
+  auto asPut = withNearAsPut(std::move(*own), *options.hintPx, photo.size(), options.hintReachPx);
+  return asPut ? std::move(*asPut) : fitted;
+}
+
 // Detection by the photo's edges (findCorridorByEdges); where that is unsure, the room's
 // layout as the layout network sees it (layout_net.h) makes it sure where the two agree,
 // takes the place of the edges' answer where it finds that answer far less likely than
@@ -1594,8 +1672,9 @@ std::optional<CorridorDetection> layoutOverEdges(const CorridorDetection& edges,
 Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
                                        const std::vector<LineSegment>& segments, const DetectOptions& options,
                                        glm::dvec2 pp) {
+  if (options.hintPx) return fitRoughBox(photo, work, segments, options, pp);
   auto byEdges = findCorridorByEdges(photo, work, segments, options, pp);
-  if (options.hintPx || !byEdges || !byEdges->hasVanishingPoints || (byEdges->found && byEdges->confident)) return byEdges;
+  if (!byEdges || !byEdges->hasVanishingPoints || (byEdges->found && byEdges->confident)) return byEdges;
   const CorridorAxes axes =
       corridorAxes(byEdges->horizontal.point, byEdges->vertical.point, byEdges->corridor.point, byEdges->focalPx, pp);
   const auto fit = fitLayout(work.bgr, work.scale, byEdges->focalPx, pp, axes);

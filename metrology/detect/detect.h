@@ -59,6 +59,10 @@ struct DetectOptions {
   // false: the hint's P5..P8 only point out the receding boundaries, and go to the
   // nearest depth inside the photo wherever they were put.
   bool hintNearDepthGiven = true;
+  // With a hint: detection's own answer is looked for too, and may take the fit's place
+  // where its far corners lie within reach of the hint's (detect.cpp: fitRoughBox).
+  // false: the hint's fit alone (the editor's snap of one corner, which has to be quick).
+  bool hintWeighsDetection = true;
 };
 
 enum class FocalSource { kGiven, kVanishingPoints, kDefault };
@@ -102,6 +106,10 @@ struct CorridorDetection {
   // points the undistorted image's.
   RadialDistortion distortion;
   int plumbLineCount = 0;  // the straight lines it was fitted to
+  // A rough box's fit (hintPx): a receding boundary did not show near the line put
+  // through it (a white ceiling meeting white walls), so the far wall's sides were
+  // fitted first, each near where it was put.
+  bool hintBoundaryUnseen = false;
 };
 
 // Finds the corridor in `photoBgr` (CV_8UC3, any size). The error is for input a

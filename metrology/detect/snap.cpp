@@ -17,6 +17,7 @@ std::optional<CornerSnap> CornerSnapper::snap(int corner, std::array<glm::dvec2,
   options.principalPointPx = principalPointPx_;
   options.hintPx = box;
   options.hintReachPx = std::max(reachPx, 6.0);
+  options.hintWeighsDetection = false;
   auto fitted = detectCorridor(photo_, options);
   if (!fitted || !fitted->found) return std::nullopt;
   const CornerEstimate& c = fitted->corners[corner];
