@@ -253,6 +253,7 @@ Document::FitResult Document::fitCorners(double reachPx) {
   result.moved = true;
   result.confident = detection->confident;
   result.message = "corners fitted to the photo's edges (moved up to " + fixed(largest, 1) + " px)" +
+                   (detection->warnings.empty() ? "" : "; " + joined(detection->warnings)) +
                    (detection->confident ? "" : "; unsure: " + joined(detection->doubts));
   return result;
 }

@@ -1658,6 +1658,12 @@ Result<CorridorDetection> fitRoughBox(const PinholeView& photo, const WorkingIma
       return fitted;
     }
   }
+  const std::string fitFound =
+      fitHolds(fitted) ? "lay " + std::to_string(std::lround(farWallDistancePx(cornerPixels(*own), cornerPixels(*fitted)))) +
+                             " px from it"
+                       : "found none";
+  own->warnings.push_back("the far wall is the one detection finds on its own, within reach of the box put (the fit near "
+                          "the lines put " + fitFound + ")");
   if (!options.hintNearDepthGiven) return own;
   auto asPut = withNearAsPut(std::move(*own), *options.hintPx, photo.size(), options.hintReachPx);
   return asPut ? std::move(*asPut) : fitted;
