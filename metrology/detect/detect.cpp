@@ -1646,24 +1646,21 @@ Result<CorridorDetection> fitRoughBox(const PinholeView& photo, const WorkingIma
   alone.hintPx.reset();
   auto own = findCorridor(photo, work, segments, alone, pp);
   if (!own || !own->found || farWallDistancePx(cornerPixels(*own), *options.hintPx) > options.hintReachPx) return fitted;
-  if (fitHolds(fitted)) {
-    const double apart = farWallDistancePx(cornerPixels(*own), cornerPixels(*fitted));
-    if (apart <= kHintAgreesPx) {
-      fitted->confident = own->confident;
-      fitted->doubts = own->doubts;
-      return fitted;
-    }
-    if (fitted->hintBoundaryUnseen) {
-      doubt(*fitted, "the far wall detection finds on its own lies " + std::to_string(std::lround(apart)) + " px from it");
-      return fitted;
-    }
+  const bool holds = fitHolds(fitted);
+  const double apart = holds ? farWallDistancePx(cornerPixels(*own), cornerPixels(*fitted)) : 0.0;
+  const std::string apartPx = std::to_string(std::lround(apart));
+  if (holds && apart <= kHintAgreesPx) {
+    fitted->confident = own->confident;
+    fitted->doubts = own->doubts;
+    return fitted;
   }
-  const std::string fitFound =
-      fitHolds(fitted) ? "lay " + std::to_string(std::lround(farWallDistancePx(cornerPixels(*own), cornerPixels(*fitted)))) +
-                             " px from it"
-                       : "found none";
+  if (holds && fitted->hintBoundaryUnseen) {
+    doubt(*fitted, "the far wall detection finds on its own lies " + apartPx + " px from it");
+    return fitted;
+  }
   own->warnings.push_back("the far wall is the one detection finds on its own, within reach of the box put (the fit near "
-                          "the lines put " + fitFound + ")");
+                          "the lines put " +
+                          (holds ? "lay " + apartPx + " px from it)" : std::string("found none)")));
   if (!options.hintNearDepthGiven) return own;
   auto asPut = withNearAsPut(std::move(*own), *options.hintPx, photo.size(), options.hintReachPx);
   return asPut ? std::move(*asPut) : fitted;
