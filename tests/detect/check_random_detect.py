@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """detect on a few random corridor scenes of the TUNE range (issue 22), per scene (CTest).
 
-usage: check_random_detect.py PHOTOWALK OUTDIR
+usage: check_random_detect.py render OUTDIR
+       check_random_detect.py detect PHOTOWALK OUTDIR
+       check_random_detect.py hint PHOTOWALK OUTDIR
 
-Renders the seeds below into OUTDIR (random_corridors.py, full size; a scene is rendered
-again only when its .pov changes), runs
+render: renders the seeds below into OUTDIR (random_corridors.py, full size; a scene is
+rendered again only when its .pov changes; CTest runs it once, as the fixture of the other
+two). detect: runs
   PHOTOWALK detect PHOTO --focal-px F --principal-point U,V -o OUT.json
 on each photo (the PNG as rendered), and checks each against the figures measured on it:
 the exit code (0 sure, 3 unsure, 2 no corridor) and, for a written answer, the far-wall
@@ -13,7 +16,7 @@ measured error or the measured error plus 0.05 px, whichever is larger; an exit-
 answer must be right (within 2 px), and P5..P8 must be at the image edge (near_depth).
 Then again without --focal-px: where the focal length comes from (focal_source) and,
 from the vanishing points, its error within twice the measured or the measured plus 0.5
-percentage points. Then `detect --hint` on a rough box of each scene (every true corner
+percentage points. hint: `detect --hint` on a rough box of each scene (every true corner
 moved 15 px), the far-wall error held as detect's is.
 The seeds are TUNE seeds (0-599): the held-out range 100000-100299 is for the report
 (bench/detect_heldout.py) only.
@@ -229,20 +232,11 @@ def fit_rough(photowalk, seed, outdir):
     return statistics.median(math.hypot(c[k][0] - t[k][0], c[k][1] - t[k][1]) for k in ("P1", "P2", "P3", "P4"))
 
 
-def main():
-    photowalk, outdir = sys.argv[1], sys.argv[2]
-    os.makedirs(outdir, exist_ok=True)
-    seeds = sorted(EXPECTED)
-    t0 = time.time()
-    with ThreadPoolExecutor(2) as pool:
-        list(pool.map(lambda s: render(s, outdir), seeds))
-    t1 = time.time()
+def check_detect(photowalk, outdir, seeds):
+    failures = []
     with ThreadPoolExecutor(2) as pool:
         got = dict(zip(seeds, pool.map(lambda s: detect(photowalk, s, outdir), seeds)))
         focal = dict(zip(seeds, pool.map(lambda s: detect(photowalk, s, outdir, focal_given=False), seeds)))
-        hinted = dict(zip(sorted(HINT_EXPECTED), pool.map(lambda s: fit_rough(photowalk, s, outdir), sorted(HINT_EXPECTED))))
-    print("rendered in %.0f s, detected in %.0f s" % (t1 - t0, time.time() - t1))
-    failures = []
     print("%-6s %-9s %-9s %-12s %s" % ("seed", "exit", "far px", "near_depth", "expected"))
     for s in seeds:
         code, far, near_depth, last = got[s]
@@ -267,13 +261,42 @@ def main():
             failures.append("seed %d: focal length from %s, measured from %s" % (s, source, want_source))
         elif want_err is not None and abs(err) > max(2 * abs(want_err), abs(want_err) + 0.5):
             failures.append("seed %d: focal length %+.2f%% off, measured %+.2f%%" % (s, err, want_err))
-    print("\nrough boxes (every corner %g px off) fitted back by detect --hint\n%-6s %-9s %s" % (HINT_SLIP_PX, "seed", "far px",
-                                                                                            "measured"))
-    for s in sorted(HINT_EXPECTED):
+    return failures
+
+
+def check_hint(photowalk, outdir, seeds):
+    failures = []
+    with ThreadPoolExecutor(2) as pool:
+        hinted = dict(zip(seeds, pool.map(lambda s: fit_rough(photowalk, s, outdir), seeds)))
+    print("rough boxes (every corner %g px off) fitted back by detect --hint\n%-6s %-9s %s" % (HINT_SLIP_PX, "seed", "far px",
+                                                                                          "measured"))
+    for s in seeds:
         far, want = hinted[s], HINT_EXPECTED[s]
         print("%-6d %-9s %.2f" % (s, "-" if far is None else "%.2f" % far, want))
         if far is None or far > max(2 * want, want + 0.05):
             failures.append("seed %d: the rough box fitted back %s px off, measured %.2f" % (s, far, want))
+    return failures
+
+
+def main():
+    usage = "usage: check_random_detect.py render OUTDIR | {detect,hint} PHOTOWALK OUTDIR"
+    if len(sys.argv) < 3 or sys.argv[1] not in ("render", "detect", "hint") or len(sys.argv) != (3 if sys.argv[1] == "render" else 4):
+        sys.exit(usage)
+    part, outdir = sys.argv[1], sys.argv[-1]
+    t0 = time.time()
+    if part == "render":
+        os.makedirs(outdir, exist_ok=True)
+        with ThreadPoolExecutor(2) as pool:
+            list(pool.map(lambda s: render(s, outdir), sorted(set(EXPECTED) | set(HINT_EXPECTED))))
+        print("rendered in %.0f s" % (time.time() - t0))
+        return 0
+    seeds = sorted(EXPECTED if part == "detect" else HINT_EXPECTED)
+    missing = [s for s in seeds if not os.path.exists(os.path.join(outdir, "seed_%05d.png" % s))]
+    if missing:
+        sys.exit("error: %d scenes not rendered in %s (seed %d first): run check_random_detect.py render %s"
+                 % (len(missing), outdir, missing[0], outdir))
+    failures = (check_detect if part == "detect" else check_hint)(sys.argv[2], outdir, seeds)
+    print("%s in %.0f s" % (part, time.time() - t0))
     for f in failures:
         print("FAIL " + f)
     return 1 if failures else 0
