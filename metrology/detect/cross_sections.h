@@ -20,6 +20,9 @@ namespace pw::metrology::detect {
 using Quad = std::array<glm::dvec2, 4>;
 enum QuadSide : int { kTopSide = 0, kBottomSide, kLeftSide, kRightSide };
 inline constexpr std::array<std::array<int, 2>, 4> kSideCorners{{{0, 1}, {2, 3}, {0, 2}, {1, 3}}};
+// The two sides that meet at each corner: its top or bottom, then its left or right.
+inline constexpr std::array<std::array<int, 2>, 4> kCornerSides{
+    {{kTopSide, kLeftSide}, {kTopSide, kRightSide}, {kBottomSide, kLeftSide}, {kBottomSide, kRightSide}}};
 
 // The one-parameter family of cross-sections: parameter t is the distance (working
 // pixels) of the bottom-left corner from the vanishing point along the floor-left

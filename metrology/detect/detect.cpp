@@ -89,6 +89,15 @@ constexpr double kLayoutFittedWithinPx = 20.0;
 // The network's box as it put it: its far corners' error (median of four) on TUNE
 // 450-599, 68th percentile (its median 3.5 px).
 constexpr double kLayoutGuessSigmaPx = 7.0;
+// The network's far wall as put, each side moved onto the photo's edge within
+// kLayoutSnapPx of it where one shows along kLayoutSnapCoverage of the side or more, and
+// the box so where three of its four sides or more are (layoutSnapped). Seeds 600-1399
+// (tuning data), the 64 answers that were the network's box as put: right 1 -> 9, none
+// lost, within 3 px 6 -> 13 (4 px: 5 right; 8 px with two sides: 9; four sides needed
+// at 0.5: 7).
+constexpr double kLayoutSnapPx = 6.0;
+constexpr double kLayoutSnapCoverage = 0.3;
+constexpr int kLayoutSnapSides = 3;
 // An unsure answer of the edges against the network's box fitted to the edges, each side
 // looked for within kLayoutFitReachPx of where the network put it (TUNE 450-599, the 132
 // scenes the network looked at: that fit within 2 px on 74, against 70 at a person's 25
@@ -617,8 +626,6 @@ Result<Candidate> completeFromFarWall(const FarWallSearch& s, CorridorDetection 
   };
   if (hidden >= 0) {
     // The hidden side's corners where the boundary through each meets the side beside it.
-    constexpr std::array<std::array<int, 2>, 4> kCornerSides{{{kTopSide, kLeftSide}, {kTopSide, kRightSide},
-                                                             {kBottomSide, kLeftSide}, {kBottomSide, kRightSide}}};
     // Each boundary through a corner of the hidden side: the ray fitted through it. With the
     // foot hidden (a person before it), a floor's ray through the corner guessed is often a
     // skirting board's top; looked for afresh, as at an open end (below), one found at a
@@ -1531,20 +1538,69 @@ Result<CorridorDetection> findCorridorByEdges(const PinholeView& photo, const Wo
   return finish(better);
 }
 
+// The network's far wall as put in `guess`, each side refitted to the photo's edge within
+// kLayoutSnapPx (refineCrossSection) where one shows along kLayoutSnapCoverage of it, the
+// others left where they are; where kLayoutSnapSides sides or more moved so, the far
+// corners where the sides meet and P5..P8 along the boundaries through them at the
+// nearest depth inside the photo. The network puts a far wall's sides a few pixels off
+// (its far corners' median 3.5 px on TUNE 450-599); the edges its sides lie along are in
+// the photo, where the edges' own search, which needs the boundaries too, found no box.
+// Returns how many sides moved (0: `guess` untouched).
+int layoutSnapped(CorridorDetection& guess, const PinholeView& photo) {
+  const Quad put = {guess.corners[P1].px, guess.corners[P2].px, guess.corners[P3].px, guess.corners[P4].px};
+  const std::optional<glm::dvec2> vp =
+      guess.corridor.isFinite() ? std::optional<glm::dvec2>(guess.corridor.pixel()) : std::nullopt;
+  const RefinedSection far =
+      refineCrossSection(photo, put, guess.horizontal.point, guess.vertical.point, kLayoutSnapPx, 2.0, 0.5, vp);
+  // Each side's line: fitted, or through the corners as put (top, bottom, left, right).
+  std::array<glm::dvec3, 4> line{};
+  std::array<bool, 4> moved{};
+  for (int side = 0; side < 4; ++side) {
+    moved[side] = far.sideFitted[side] && far.sides[side].coverage >= kLayoutSnapCoverage;
+    line[side] = moved[side] ? far.sides[side].line
+                             : lineThrough(put[kSideCorners[side][0]], put[kSideCorners[side][1]]);
+  }
+  const int sidesMoved = static_cast<int>(std::count(moved.begin(), moved.end(), true));
+  if (sidesMoved < kLayoutSnapSides) return 0;
+  Quad snapped{};
+  for (int k = 0; k < 4; ++k) {
+    const auto p = intersect(line[kCornerSides[k][0]], line[kCornerSides[k][1]]);
+    if (!p || !(std::isfinite(p->x) && std::isfinite(p->y))) return 0;
+    snapped[k] = *p;
+  }
+  const auto near = nearestSectionInside(guess, snapped, photo.size());
+  if (!near) return 0;
+  for (const glm::dvec2& p : *near)
+    if (!(std::isfinite(p.x) && std::isfinite(p.y))) return 0;
+  for (int k = 0; k < 4; ++k) {
+    const bool bothFitted = moved[kCornerSides[k][0]] && moved[kCornerSides[k][1]];
+    guess.corners[k] = {snapped[k], bothFitted ? far.cornerConfidence[k] : 0.0,
+                        bothFitted ? far.cornerSigmaPx[k] : kLayoutGuessSigmaPx};
+  }
+  guess.corners[P7].px = (*near)[0], guess.corners[P8].px = (*near)[1];
+  guess.corners[P5].px = (*near)[2], guess.corners[P6].px = (*near)[3];
+  return sidesMoved;
+}
+
 // The network's box as it put it, a guess for a person to start from (exit 3) in place of
 // `edges` (whose vanishing points and focal length it keeps), with `why` its one doubt;
+// its far wall's sides moved onto the edges near them where they show (layoutSnapped);
 // nullopt where its far wall is no corridor's end (farWallAspect). Each corner's sigma is
-// the network's error on scenes it was not trained on (kLayoutGuessSigmaPx).
+// the network's error on scenes it was not trained on (kLayoutGuessSigmaPx), or the fitted
+// sides' where both through it were moved.
 std::optional<CorridorDetection> layoutAsPut(const CorridorDetection& edges, const std::array<glm::dvec2, 8>& layout,
-                                             const std::string& why) {
+                                             const std::string& why, const PinholeView& photo) {
   CorridorDetection guess = edges;
   for (int k = 0; k < kCornerCount; ++k) guess.corners[k] = {layout[k], 0.0, kLayoutGuessSigmaPx};
   guess.found = true;
   guess.nearDepth = NearDepth::kImageEdge;
+  const int sidesMoved = layoutSnapped(guess, photo);
   if (!isCorridorEndAspect(farWallAspect(guess))) return std::nullopt;
   guess.notFoundReason.clear();
   guess.doubts.clear();
-  doubt(guess, why);
+  doubt(guess, sidesMoved ? why + "; " + std::to_string(sidesMoved) + " of its far wall's sides moved onto the edges within " +
+                                std::to_string(static_cast<int>(kLayoutSnapPx)) + " px of them"
+                          : why);
   return guess;
 }
 
@@ -1573,14 +1629,15 @@ bool fitHolds(const Result<CorridorDetection>& fitted) {
 // portrait gives the edges' other reasons (too few receding lines, boundaries that divide
 // no surfaces) too, and the network a box all the same, though one it fits less well.
 CorridorDetection layoutGuess(const CorridorDetection& edges, const LayoutFit& fit, const std::array<glm::dvec2, 8>& layout,
-                              cv::Size size) {
+                              const PinholeView& photo) {
   const bool boundariesFound = edges.notFoundReason == kNoFarWallAcrossBoundaries;
   if (!boundariesFound && !(fit.wholeScore >= kLayoutRoomScore)) return edges;
-  if (!corridorMeetsInside(edges, size)) return edges;
+  if (!corridorMeetsInside(edges, photo.size())) return edges;
   auto guess = layoutAsPut(edges, layout,
                            "the far wall is where the layout network put it; the photo's edges do not bear it out, and alone found " +
                                (boundariesFound ? std::string("the room's four boundaries but no far wall")
-                                                : "no box: " + edges.notFoundReason));
+                                                : "no box: " + edges.notFoundReason),
+                           photo);
   return guess ? std::move(*guess) : edges;
 }
 
@@ -1595,7 +1652,8 @@ CorridorDetection layoutGuess(const CorridorDetection& edges, const LayoutFit& f
 std::optional<CorridorDetection> layoutOverEdges(const CorridorDetection& edges,
                                                  const std::function<Result<CorridorDetection>()>& fitToEdges,
                                                  const LayoutFit& fit, const std::array<glm::dvec2, 8>& layout,
-                                                 double focalPx, glm::dvec2 pp, const CorridorAxes& axes) {
+                                                 double focalPx, glm::dvec2 pp, const CorridorAxes& axes,
+                                                 const PinholeView& photo) {
   if (!(fit.wholeScore >= kLayoutRoomScore)) return std::nullopt;
   const auto score = [&](const std::array<glm::dvec2, 8>& c, bool zoomed) {
     return boxScore(fit, {c[P1], c[P2], c[P3], c[P4]}, focalPx, pp, axes, zoomed);
@@ -1619,7 +1677,7 @@ std::optional<CorridorDetection> layoutOverEdges(const CorridorDetection& edges,
   std::snprintf(figures, sizeof figures, "log-probability per pixel %.2f against %.2f", *ourNear, *theirNear);
   const std::string why = "the far wall the edges found is unlikely to the layout network (" + std::string(figures) + "): ";
   if (holds) return layoutFitted(edges, *fitted, why + "its box fitted to the edges instead");
-  return layoutAsPut(edges, layout, why + "its box as it put it instead (the edges do not bear it out)");
+  return layoutAsPut(edges, layout, why + "its box as it put it instead (the edges do not bear it out)", photo);
 }
 
 Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingImage& work,
@@ -1707,14 +1765,14 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
   // edges bear that out (DetectParts.RoomBoxFindsTheFarWallBehindClutter: 60 px off).
   if (byEdges->found) {
     auto over = layoutOverEdges(
-        *byEdges, [&] { return fitToEdges(kLayoutFitReachPx); }, *fit, *layout, byEdges->focalPx, pp, axes);
+        *byEdges, [&] { return fitToEdges(kLayoutFitReachPx); }, *fit, *layout, byEdges->focalPx, pp, axes, photo);
     return over ? std::move(*over) : std::move(*byEdges);
   }
   // Where the edges found no box, the network's box fitted to the edges is a guess where
   // the fit keeps it near where the network put it.
   auto fitted = fitToEdges(options.hintReachPx);
   if (!fitHolds(fitted) || farWallMedianDistancePx(cornerPixels(*fitted), *layout) > kLayoutFittedWithinPx) {
-    return layoutGuess(*byEdges, *fit, *layout, photo.size());
+    return layoutGuess(*byEdges, *fit, *layout, photo);
   }
   return layoutFitted(*byEdges, std::move(*fitted),
                       "the far wall is where the layout network put it, fitted to the edges; the edges alone found none (" +

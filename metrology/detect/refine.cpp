@@ -57,11 +57,7 @@ RefinedSection refineCrossSection(const PinholeView& photo, const Quad& coarse, 
       out.sides[side].inliers = 1;
     }
   }
-  // Corner k is where its horizontal side meets its vertical side.
-  constexpr std::array<std::array<int, 2>, 4> kCornerSides{{{kTopSide, kLeftSide},
-                                                           {kTopSide, kRightSide},
-                                                           {kBottomSide, kLeftSide},
-                                                           {kBottomSide, kRightSide}}};
+  // Corner k is where its horizontal side meets its vertical side (kCornerSides).
   for (int k = 0; k < 4; ++k) {
     const int h = kCornerSides[k][0], v = kCornerSides[k][1];
     auto p = intersect(lines[h], lines[v]);
