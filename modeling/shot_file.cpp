@@ -325,9 +325,9 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bo
   return shot;
 }
 
-Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx, bool assumeFocal) {
+Result<LoadedShot> loadShot(const fs::path& path, std::optional<double> focalPx, bool assumeFocal, bool allowNoScale) {
   json otherFields;
-  auto shot = readShotFile(path, &otherFields, assumeFocal);
+  auto shot = readShotFile(path, &otherFields, assumeFocal || allowNoScale);
   if (!shot) return shot.error();
   LoadedShot loaded{std::move(*shot), {}, std::move(otherFields), {}};
   metrology::Shot& s = loaded.shot;

@@ -46,8 +46,10 @@ struct LoadedShot {
   // for the caller to show as warnings.
   std::vector<std::string> warnings;
 };
+// `allowNoScale`: a shot without a camera height or reference length is read too, the
+// focal length still required (the editor, which assumes a height and says so).
 Result<LoadedShot> loadShot(const std::filesystem::path& path, std::optional<double> focalPx = std::nullopt,
-                            bool assumeFocal = false);
+                            bool assumeFocal = false, bool allowNoScale = false);
 
 // Writes a shot file atomically: `otherFields` (a JSON object, e.g. LoadedShot's) and
 // the shot's own fields, which replace any of the same name. The image path is

@@ -90,10 +90,14 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
       photoOptions.photoShotPath = path;
       return open(*photo, photoOptions);
     }
-    auto loaded = modeling::loadShot(path);
+    // (A shot without a camera height or reference, as `detect` writes one without
+    // --camera-height, opens with the height assumed, as a photo does, and says so.)
+    auto loaded = modeling::loadShot(path, std::nullopt, /*assumeFocal=*/false, /*allowNoScale=*/true);
     if (!loaded) return loaded.error();
     doc.path_ = path;
     doc.shot_ = std::move(loaded->shot);
+    doc.scaleFromFile_ = doc.shot_.cameraHeightM || doc.shot_.reference;
+    if (!doc.scaleFromFile_) doc.shot_.cameraHeightM = kDefaultCameraHeightM;
     doc.photo_ = std::move(loaded->image);
     doc.notes_ = std::move(loaded->warnings);
     doc.otherFields_ = std::move(loaded->otherFields);
@@ -306,7 +310,7 @@ std::string Document::focalSource() const {
 metrology::InputOrigins Document::inputOrigins() const {
   metrology::InputOrigins origins;
   origins.focal = metrology::focalOriginOf(focalSource());
-  origins.cameraHeightAssumed = !fromFile_ && shot_.cameraHeightM && *shot_.cameraHeightM == kDefaultCameraHeightM;
+  origins.cameraHeightAssumed = !scaleFromFile_ && shot_.cameraHeightM && *shot_.cameraHeightM == kDefaultCameraHeightM;
   return origins;
 }
 

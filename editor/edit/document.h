@@ -62,7 +62,9 @@ class Document {
   // Opens a shot file (*.json: modeling::loadShot) or a photo (PNG/JPEG). A photo gets
   // its corners from automatic detection (metrology/detect), with the confidences;
   // where none is found, a default box from the image size; the camera height is then
-  // kDefaultCameraHeightM until set. notes() says what was assumed. Errors: a file
+  // kDefaultCameraHeightM until set, as it is for a shot file with neither a camera height
+  // nor a reference length (detect's without --camera-height). notes() says what was
+  // assumed. Errors: a file
   // that cannot be read, a shot file with errors (one line naming the problem).
   static Result<Document> open(const std::filesystem::path& path, const OpenOptions& options = {});
 
@@ -110,7 +112,8 @@ class Document {
   std::string focalSource() const;
   // Where the focal length and the camera height came from, for the measurement's ±
   // (metrology/input_sigma.h): the camera height is assumed while a photo opened
-  // without a shot file keeps kDefaultCameraHeightM.
+  // without a shot file, or a shot file without a height or reference, keeps
+  // kDefaultCameraHeightM.
   metrology::InputOrigins inputOrigins() const;
 
   // Fits the eight corners, from where they are now, to the photo's edges and
@@ -168,6 +171,9 @@ class Document {
   std::optional<metrology::FocalLengthMm> openedFocalMm_;
   std::string openedFocalSource_;
   bool fromFile_ = false;
+  // The shot file gave a camera height or a reference length (else the height is
+  // assumed, kDefaultCameraHeightM, as for a photo opened alone).
+  bool scaleFromFile_ = false;
   nlohmann::json fieldsToWrite() const;
   History history_;
 };

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "base/atomic_file.h"
@@ -244,6 +245,45 @@ TEST(Document, ShotFileOpensCleanAndSavesWhereItWasRead) {
   EXPECT_TRUE(doc->hasUnsavedEdits());
   doc->undo();
   EXPECT_FALSE(doc->dirty());
+}
+
+// `detect` without --camera-height writes a shot with neither a camera height nor a
+// reference length, and tells a person to check it with `photowalk edit FILE`: the editor
+// opens it with the height assumed, as for a photo alone, and says so (it refused the
+// file before: "give camera_height_m or a reference length").
+TEST(Document, AShotFileWithoutACameraHeightOpensWithTheHeightAssumed) {
+  const groundtruth::GroundTruth truth = groundtruth::loadGroundTruth("corridor_b");
+  const fs::path dir = outputDir() / "no_height";
+  fs::create_directories(dir);
+  fs::copy_file(truth.image, dir / "corridor_b.png", fs::copy_options::overwrite_existing);
+  auto text = readFile(truth.shot);
+  ASSERT_TRUE(text.ok()) << text.message();
+  nlohmann::json shot = nlohmann::json::parse(*text);
+  ASSERT_TRUE(shot.contains("camera_height_m"));
+  shot.erase("camera_height_m");
+  shot.erase("reference");
+  ASSERT_TRUE(writeFileAtomic(dir / "corridor_b.json", shot.dump(2)).ok());
+  auto doc = Document::open(dir / "corridor_b.json");
+  ASSERT_TRUE(doc.ok()) << doc.message();
+  EXPECT_FALSE(doc->hasUnsavedEdits());
+  EXPECT_EQ(doc->shot().cornersPx, truth.cornersPx);
+  ASSERT_TRUE(doc->shot().cameraHeightM.has_value());
+  EXPECT_EQ(*doc->shot().cameraHeightM, kDefaultCameraHeightM);
+  EXPECT_TRUE(doc->inputOrigins().cameraHeightAssumed);
+  const auto noted = [&](const std::string& words) {
+    const auto notes = doc->notes();
+    return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(words) != std::string::npos; });
+  };
+  EXPECT_TRUE(noted("camera height assumed 1.60 m"));
+  Shot set = doc->shot();
+  set.cameraHeightM = 1.45;
+  doc->apply(set, "camera");
+  EXPECT_FALSE(noted("camera height assumed"));
+  EXPECT_FALSE(doc->inputOrigins().cameraHeightAssumed);
+  // The file's own height is never taken for an assumption, 1.6 m or not.
+  auto given = Document::open(truth.shot);
+  ASSERT_TRUE(given.ok()) << given.message();
+  EXPECT_FALSE(given->inputOrigins().cameraHeightAssumed);
 }
 
 TEST(Document, UndoEverythingThenRedoEverythingSavesTheSameBytes) {
