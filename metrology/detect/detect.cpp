@@ -1562,23 +1562,20 @@ int layoutSnapped(CorridorDetection& guess, const PinholeView& photo) {
   }
   const int sidesMoved = static_cast<int>(std::count(moved.begin(), moved.end(), true));
   if (sidesMoved < kLayoutSnapSides) return 0;
-  Quad snapped{};
+  CorridorDetection out = guess;
   for (int k = 0; k < 4; ++k) {
     const auto p = intersect(line[kCornerSides[k][0]], line[kCornerSides[k][1]]);
-    if (!p || !(std::isfinite(p->x) && std::isfinite(p->y))) return 0;
-    snapped[k] = *p;
-  }
-  const auto near = nearestSectionInside(guess, snapped, photo.size());
-  if (!near) return 0;
-  for (const glm::dvec2& p : *near)
-    if (!(std::isfinite(p.x) && std::isfinite(p.y))) return 0;
-  for (int k = 0; k < 4; ++k) {
+    if (!p) return 0;
     const bool bothFitted = moved[kCornerSides[k][0]] && moved[kCornerSides[k][1]];
-    guess.corners[k] = {snapped[k], bothFitted ? far.cornerConfidence[k] : 0.0,
-                        bothFitted ? far.cornerSigmaPx[k] : kLayoutGuessSigmaPx};
+    out.corners[k] = {*p, bothFitted ? far.cornerConfidence[k] : 0.0, bothFitted ? far.cornerSigmaPx[k] : kLayoutGuessSigmaPx};
   }
-  guess.corners[P7].px = (*near)[0], guess.corners[P8].px = (*near)[1];
-  guess.corners[P5].px = (*near)[2], guess.corners[P6].px = (*near)[3];
+  const auto near = nearestSectionInside(out, {out.corners[P1].px, out.corners[P2].px, out.corners[P3].px, out.corners[P4].px},
+                                         photo.size());
+  if (!near) return 0;
+  out.corners[P7].px = (*near)[0], out.corners[P8].px = (*near)[1];
+  out.corners[P5].px = (*near)[2], out.corners[P6].px = (*near)[3];
+  if (!allFinite(out.corners)) return 0;
+  guess = std::move(out);
   return sidesMoved;
 }
 
