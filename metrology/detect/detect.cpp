@@ -894,6 +894,19 @@ CrossSectionFamily sectionsThroughFarWall(const CorridorDetection& d, const Quad
   return CrossSectionFamily(vp, d.horizontal.point, d.vertical.point, rays);
 }
 
+// P5..P8 as a cross-section (Quad's order: top-left, top-right, bottom-left,
+// bottom-right), and back.
+constexpr std::array<int, 4> kNearCornersOfQuad = {P7, P8, P5, P6};
+Quad nearQuadOf(const std::array<glm::dvec2, 8>& corners) {
+  return {corners[P7], corners[P8], corners[P5], corners[P6]};
+}
+void setNearCorners(std::array<glm::dvec2, 8>& corners, const Quad& near) {
+  for (int k = 0; k < 4; ++k) corners[kNearCornersOfQuad[k]] = near[k];
+}
+void setNearCorners(CorridorDetection& d, const Quad& near) {
+  for (int k = 0; k < 4; ++k) d.corners[kNearCornersOfQuad[k]].px = near[k];
+}
+
 // The nearest cross-section whose four corners lie inside the photo (1% of its short side
 // from the border), along the boundaries through the far corners `far`: its corners in
 // the order P7, P8, P5, P6.
@@ -909,10 +922,10 @@ std::optional<CorridorDetection> withNearAsPut(CorridorDetection d, const std::a
   const CrossSectionFamily family =
       sectionsThroughFarWall(d, {d.corners[P1].px, d.corners[P2].px, d.corners[P3].px, d.corners[P4].px});
   const double farT = glm::length(d.corners[P3].px - d.corridor.pixel());
-  const auto [t, depth] = nearSectionDepth(family, farT, size, Quad{hint[P7], hint[P8], hint[P5], hint[P6]}, reachPx);
+  const auto [t, depth] = nearSectionDepth(family, farT, size, nearQuadOf(hint), reachPx);
   const auto near = family.at(t);
   if (!near || t <= farT) return std::nullopt;
-  d.corners[P7].px = (*near)[0], d.corners[P8].px = (*near)[1], d.corners[P5].px = (*near)[2], d.corners[P6].px = (*near)[3];
+  setNearCorners(d, *near);
   if (!allFinite(d.corners)) return std::nullopt;
   d.nearDepth = depth;
   return d;
@@ -1044,7 +1057,7 @@ bool moveFarSide(CorridorDetection& d, const WorkingImage& work, const Quad& far
   if (d.nearDepth == NearDepth::kImageEdge) {
     const auto near = nearestSectionInside(d, {corners[P1], corners[P2], corners[P3], corners[P4]}, size);
     if (!near) return false;
-    corners[P7] = (*near)[0], corners[P8] = (*near)[1], corners[P5] = (*near)[2], corners[P6] = (*near)[3];
+    setNearCorners(corners, *near);
   }
   for (const glm::dvec2& p : corners)
     if (!(std::isfinite(p.x) && std::isfinite(p.y))) return false;
@@ -1219,7 +1232,7 @@ CorridorDetection fromHint(const FarWallSearch& s, CorridorDetection d, const st
   if (!far) far = findFarWallNear(work, family, tGiven, reach * work.scale);
   const std::optional<Quad> farWork = far ? std::optional<Quad>(far->corners) : family.at(tGiven);
   if (!farWork) return asGiven(d, "the far wall's corners do not lie on the boundaries");
-  const Quad nearGiven = {hint[P7], hint[P8], hint[P5], hint[P6]};
+  const Quad nearGiven = nearQuadOf(hint);
   auto done = completeFromFarWall(s, d, *farWork, far ? far->t : tGiven,
                                   s.options.hintNearDepthGiven ? std::optional<Quad>(nearGiven) : std::nullopt,
                                   /*allowHiddenSide=*/true);
@@ -1600,8 +1613,7 @@ int layoutSnapped(CorridorDetection& guess, const PinholeView& photo) {
   const auto near = nearestSectionInside(out, {out.corners[P1].px, out.corners[P2].px, out.corners[P3].px, out.corners[P4].px},
                                          photo.size());
   if (!near) return 0;
-  out.corners[P7].px = (*near)[0], out.corners[P8].px = (*near)[1];
-  out.corners[P5].px = (*near)[2], out.corners[P6].px = (*near)[3];
+  setNearCorners(out, *near);
   if (!allFinite(out.corners)) return 0;
   guess = std::move(out);
   return sidesMoved;
@@ -1896,7 +1908,7 @@ std::optional<std::array<glm::dvec2, 8>> boxAlongVanishingPoints(const CorridorD
   if (!near) return std::nullopt;
   std::array<glm::dvec2, 8> box{};
   box[P1] = *p1, box[P2] = *p2, box[P3] = *p3, box[P4] = *p4;
-  box[P7] = (*near)[0], box[P8] = (*near)[1], box[P5] = (*near)[2], box[P6] = (*near)[3];
+  setNearCorners(box, *near);
   for (const glm::dvec2& p : box)
     if (!(std::isfinite(p.x) && std::isfinite(p.y))) return std::nullopt;
   return box;
