@@ -7,7 +7,11 @@ worst far-wall corner's distance from the careful box and the worst near corner'
 distance across the careful box's boundary through it (P5..P8 slide along their boundary
 to the nearest depth inside the photo, a convention, not a fit), and
 per photo and in all how many come back within 2 px.
-usage: york_hint.py PHOTOWALK [--trials N] [--dataset DIR] [--boxes FILE]"""
+usage: york_hint.py PHOTOWALK [--trials N] [--k1 K] [--dataset DIR] [--boxes FILE]
+
+--k1 K: the rough shots carry the lens (distortion {k1: K, k2: 0}, as a calibrated camera's
+would; the careful boxes' file has the k1 fitted to all 51 photos' labelled segments), and
+`detect --hint` reads the photos through it instead of fitting a lens of its own."""
 import argparse, json, math, os, random, statistics, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -16,6 +20,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("photowalk")
     ap.add_argument("--trials", type=int, default=20)
+    ap.add_argument("--k1", type=float, default=None)
     ap.add_argument("--dataset", default=os.path.join(HERE, "..", "..", "shared", "real-photos", "york-urban-train"))
     ap.add_argument("--boxes", default=os.path.join(HERE, "data", "york_careful_boxes.json"))
     a = ap.parse_args()
@@ -34,6 +39,8 @@ def main():
                     rough[k] = [u + 15 * math.cos(t), v + 15 * math.sin(t)]
                 shot = {"image": os.path.join(a.dataset, "images", name + ".jpg"), "focal_px": cam["focal_px"],
                         "principal_point": cam["principal_point"], "camera_height_m": 1.6, "corners_px": rough}
+                if a.k1 is not None:
+                    shot["distortion"] = {"k1": a.k1, "k2": 0}
                 rp, fp = os.path.join(d, "rough.json"), os.path.join(d, "fit.json")
                 json.dump(shot, open(rp, "w"))
                 r = subprocess.run([a.photowalk, "detect", "--hint", rp, "-o", fp], capture_output=True, text=True)

@@ -55,7 +55,9 @@ constexpr const char* kUsage =
     "                          px): they come back fitted to the photo's edges and\n"
     "                          vanishing points, each with its confidence; the shot's\n"
     "                          other fields (camera, reference, ...) are kept. The photo,\n"
-    "                          focal length and principal point are the shot's.\n"
+    "                          focal length, principal point and lens distortion are\n"
+    "                          the shot's (a shot without a distortion has the lens\n"
+    "                          fitted to the photo's straight lines, as without --hint)\n"
     "  --hint-reach PX         how far from where it was put a side is looked for (25)\n\n"
     "Exit status: 0 written, and detect is sure of it; 3 written, but unsure: a best\n"
     "guess for a person to check in the editor (a warning line on stderr says why);\n"
@@ -83,7 +85,7 @@ json vanishingPointJson(const metrology::detect::VanishingPoint& vp) {
   return j;
 }
 
-json detectionJson(const CorridorDetection& d) {
+json detectionJson(const CorridorDetection& d, bool lensGiven) {
   json j;
   j["method"] = "lsd+manhattan-ransac+angular-profile+subpixel-edges+layout-net";
   j["found"] = d.found;
@@ -104,7 +106,9 @@ json detectionJson(const CorridorDetection& d) {
   j["warnings"] = d.warnings;
   j["confident"] = d.confident;
   j["doubts"] = d.doubts;
-  if (!d.distortion.isNone()) {
+  if (lensGiven) {
+    j["distortion"] = {{"method", "given"}};
+  } else if (!d.distortion.isNone()) {
     j["distortion"] = {{"method", "plumb-line"}, {"lines", d.plumbLineCount}};
   }
   return j;
@@ -187,6 +191,7 @@ int runDetect(Args& args) {
     if (!options.focalPx && shot.focalPx > 0) options.focalPx = shot.focalPx;
     if (!options.principalPointPx && shot.principalPointPx) options.principalPointPx = shot.principalPointPx;
     if (!cameraHeightM) cameraHeightM = shot.cameraHeightM;
+    options.lens = shot.distortion;
     keptFields.erase("detection");
   }
   const std::string photoPath = positionals.empty() ? shot.imagePath : positionals[0];
@@ -234,7 +239,7 @@ int runDetect(Args& args) {
   }
   shot.principalPointPx = detection->principalPointPx;
   shot.cameraHeightM = cameraHeightM;
-  json report = detectionJson(*detection);
+  json report = detectionJson(*detection, options.lens.has_value());
   if (exifFocal) report["focal_source"] = "exif";
   keptFields["focal_source"] = focalSource;
   keptFields["detection"] = report;
@@ -262,7 +267,10 @@ int runDetect(Args& args) {
   const glm::dvec2 vp = detection->corridor.pixel();
   std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,
               detection->corridor.confidence, detection->focalPx, focalSource.c_str());
-  if (!detection->distortion.isNone()) {
+  if (options.lens && !options.lens->isNone()) {
+    std::printf("lens distortion %s (the shot's); the corners are the photo's\n",
+                metrology::distortionText(*options.lens).c_str());
+  } else if (!detection->distortion.isNone()) {
     std::printf("lens distortion k1 %.4f (from %d straight lines); the corners are the photo's\n",
                 detection->distortion.k1, detection->plumbLineCount);
   }

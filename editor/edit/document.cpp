@@ -224,6 +224,7 @@ Document::FitResult Document::fitCorners(double reachPx) {
   options.principalPointPx = shot_.principalPoint();
   options.hintPx = shot_.cornersPx;
   options.hintReachPx = reachPx;
+  options.lens = shot_.distortion;
   auto detection = metrology::detect::detectCorridor(photo_, options);
   FitResult result;
   if (!detection) {
@@ -240,6 +241,10 @@ Document::FitResult Document::fitCorners(double reachPx) {
     return text;
   };
   Shot after = shot_;
+  // A lens found from the photo's lines where the shot had none: the fitted corners
+  // are where that lens shows them, so the shot takes it.
+  const bool lensFound = !shot_.distortion && !detection->distortion.isNone();
+  if (lensFound) after.distortion = detection->distortion;
   double largest = 0;
   for (int k = 0; k < kCornerCount; ++k) {
     after.cornersPx[k] = detection->corners[k].px;
@@ -257,6 +262,9 @@ Document::FitResult Document::fitCorners(double reachPx) {
   result.moved = true;
   result.confident = detection->confident;
   result.message = "corners fitted to the photo's edges (moved up to " + fixed(largest, 1) + " px)" +
+                   (lensFound ? "; lens distortion " + metrology::distortionText(detection->distortion) +
+                                    " found from the photo's straight lines"
+                              : "") +
                    (detection->warnings.empty() ? "" : "; " + joined(detection->warnings)) +
                    (detection->confident ? "" : "; unsure: " + joined(detection->doubts));
   return result;

@@ -310,7 +310,8 @@ std::optional<EditMode::SnapRequest> EditMode::snapRequest() {
   r.at = shot.cornersPx[drag_->corner];
   // Within a dozen screen pixels of where it is dropped, whatever the zoom.
   r.reachPx = std::clamp(kSnapReachScreenPx / canvas_.scale(), 1.0, 25.0);
-  r.snapper = std::make_shared<const metrology::detect::CornerSnapper>(doc_->photo(), shot.focalPx, shot.principalPoint());
+  r.snapper = std::make_shared<const metrology::detect::CornerSnapper>(doc_->photo(), shot.focalPx, shot.principalPoint(),
+                                                                       shot.distortion);
   return r;
 }
 

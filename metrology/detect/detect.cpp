@@ -1842,6 +1842,9 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
     }
     if (!(options.hintReachPx > 0 && std::isfinite(options.hintReachPx))) return makeError("the hint's reach must be positive");
   }
+  if (options.lens) {
+    if (Status lens = checkDistortion(*options.lens); !lens) return makeError("the lens given: " + lens.message());
+  }
   const cv::Size size = photo.size();
   const glm::dvec2 pp = options.principalPointPx.value_or(glm::dvec2((size.width - 1) * 0.5, (size.height - 1) * 0.5));
   if (!(pp.x >= 0 && pp.y >= 0 && pp.x <= size.width - 1 && pp.y <= size.height - 1)) {
@@ -1853,8 +1856,13 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   const WorkingImage work = makeWorkingImage(photo, std::max(kMinPhotoSidePx, options.workingMaxSidePx));
   const std::vector<LineSegment> segments = detectLineSegments(work.gray, work.scale, minSegmentPx);
   const double focalPx = givenOrDefaultFocal(options, size);
-  const std::optional<PlumbLineFit> lens =
-      options.estimateDistortion ? fitPlumbLines(work, segments, pp, focalPx) : std::nullopt;
+  // The lens: the one given, else the one the photo's straight lines show, if any.
+  std::optional<PlumbLineFit> lens;
+  if (options.lens) {
+    if (!options.lens->isNone()) lens = PlumbLineFit{Intrinsics{focalPx, pp, *options.lens}};
+  } else if (options.estimateDistortion) {
+    lens = fitPlumbLines(work, segments, pp, focalPx);
+  }
   if (!lens) return findCorridor(PinholeView(photo), work, segments, options, pp);
 
   // Through the lens: the working copy undistorted (cheap at its size), the
@@ -1869,10 +1877,14 @@ Result<CorridorDetection> detectCorridor(const cv::Mat& photo, const DetectOptio
   auto d = findCorridor(PinholeView(photo, lens->lens), pinholeWork,
                         detectLineSegments(pinholeWork.gray, pinholeWork.scale, minSegmentPx), pinholeOptions, pp);
   if (!d) return d;
-  // k1 fixes the bend in pixels as k1 / f²: the same bend for the focal length found.
-  const double rescale = d->focalPx / lens->lens.focalPx;
-  d->distortion.k1 = lens->lens.distortion.k1 * rescale * rescale;
-  d->plumbLineCount = lens->lineCount;
+  if (options.lens) {
+    d->distortion = *options.lens;
+  } else {
+    // k1 fixes the bend in pixels as k1 / f²: the same bend for the focal length found.
+    const double rescale = d->focalPx / lens->lens.focalPx;
+    d->distortion.k1 = lens->lens.distortion.k1 * rescale * rescale;
+    d->plumbLineCount = lens->lineCount;
+  }
   if (!d->found) return d;
   for (CornerEstimate& corner : d->corners) corner.px = distortPixel(lens->lens, corner.px);
   return d;

@@ -49,6 +49,11 @@ struct DetectOptions {
   // Fit the lens's radial distortion to the photo's straight lines (distortion.h) and,
   // when they show one, detect on the photo undistorted.
   bool estimateDistortion = true;
+  // The lens when it is known (a calibrated camera, or the distortion a shot file
+  // carries: normalised by the focal length given, else by the one detection uses):
+  // detection reads the photo through it and fits none of its own; {0, 0} is a known
+  // pinhole. It wins over estimateDistortion.
+  std::optional<RadialDistortion> lens;
   // Corners a person placed roughly (the photo's pixels, P1..P8): instead of searching
   // the whole photo, detection fits them to its edges and vanishing points, each side
   // and boundary looked for within hintReachPx of where they were put. P5..P8 keep the
@@ -101,11 +106,12 @@ struct CorridorDetection {
   std::vector<std::string> doubts;
   std::vector<std::string> warnings;
   int segmentCount = 0;
-  // The lens's radial distortion found from the photo's straight lines (normalised by
-  // focalPx); none: a pinhole photo. The corners are the photo's pixels, the vanishing
-  // points the undistorted image's.
+  // The lens's radial distortion (normalised by focalPx): the one given
+  // (DetectOptions::lens), else the one found from the photo's straight lines; none: a
+  // pinhole photo. The corners are the photo's pixels, the vanishing points the
+  // undistorted image's.
   RadialDistortion distortion;
-  int plumbLineCount = 0;  // the straight lines it was fitted to
+  int plumbLineCount = 0;  // the straight lines it was fitted to; 0 where the lens was given
   // A rough box's fit (hintPx): a receding boundary did not show near the line put
   // through it (a white ceiling meeting white walls), so the far wall's sides were
   // fitted first, each near where it was put.

@@ -15,6 +15,7 @@ std::optional<CornerSnap> CornerSnapper::snap(int corner, std::array<glm::dvec2,
   DetectOptions options;
   if (focalPx_ > 0) options.focalPx = focalPx_;
   options.principalPointPx = principalPointPx_;
+  options.lens = lens_;
   options.hintPx = box;
   options.hintReachPx = std::max(reachPx, 6.0);
   options.hintWeighsDetection = false;

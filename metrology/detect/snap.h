@@ -2,7 +2,7 @@
 // part 5): the editor shows the snap while the drag goes on and puts the corner there
 // on release (Alt keeps it where it is).
 //
-//   const CornerSnapper snapper(photo, focalPx, principalPoint);   // per photo and camera
+//   const CornerSnapper snapper(photo, focalPx, principalPoint, shot.distortion);   // per photo and camera
 //   if (auto at = snapper.snap(P1, shot.cornersPx, dragged, 12.0)) ...
 #pragma once
 
@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
+
+#include "metrology/distortion.h"
 
 namespace pw::metrology::detect {
 
@@ -21,9 +23,12 @@ struct CornerSnap {
 
 class CornerSnapper {
  public:
-  // `photoBgr` is shared, not copied (a cv::Mat header).
-  CornerSnapper(const cv::Mat& photoBgr, double focalPx, glm::dvec2 principalPointPx)
-      : photo_(photoBgr), focalPx_(focalPx), principalPointPx_(principalPointPx) {}
+  // `photoBgr` is shared, not copied (a cv::Mat header). `lens`: the shot's distortion
+  // when it has one (the photo is read through it), else none: fitted to the photo's
+  // straight lines, as detect does.
+  CornerSnapper(const cv::Mat& photoBgr, double focalPx, glm::dvec2 principalPointPx,
+                std::optional<RadialDistortion> lens = std::nullopt)
+      : photo_(photoBgr), focalPx_(focalPx), principalPointPx_(principalPointPx), lens_(lens) {}
 
   // Corner `corner` (P1..P8) of `box` dropped at `at`: the box fitted to the photo's
   // edges and vanishing points from there (detect's hint: the far wall's sides through
@@ -37,6 +42,7 @@ class CornerSnapper {
   cv::Mat photo_;
   double focalPx_ = 0;
   glm::dvec2 principalPointPx_{0, 0};
+  std::optional<RadialDistortion> lens_;
 };
 
 }  // namespace pw::metrology::detect

@@ -169,6 +169,45 @@ TEST(DistortedGroundTruth, ALargePhotoThroughTheLensMeasuresAsTheSmallOne) {
   }
 }
 
+// A rough box on a distorted photo whose lens is known (a shot file's distortion: the
+// editor's camera panel, a calibrated camera): detection reads the photo through that
+// lens and fits none of its own, and the corners come back where the lens shows them. A
+// known pinhole ({0, 0}) is taken as given too: no lens is fitted.
+TEST(DistortedGroundTruth, ARoughBoxWithTheLensKnownComesBackThroughIt) {
+  for (const char* name : {"corridor_a_k020", "corridor_e_k010"}) {
+    const DistortedTruth t = loadDistorted(name);
+    const cv::Mat photo = cv::imread(t.shot.shot.imagePath, cv::IMREAD_COLOR);
+    ASSERT_FALSE(photo.empty()) << name;
+    DetectOptions options;
+    options.focalPx = t.answers.focalPx;
+    options.principalPointPx = t.answers.principalPointPx;
+    std::array<glm::dvec2, 8> rough = t.shot.shot.cornersPx;
+    for (int k = 0; k < kCornerCount; ++k) rough[k] += 8.0 * glm::dvec2(std::cos(0.9 * k + 0.2), std::sin(0.9 * k + 0.2));
+    options.hintPx = rough;
+    options.lens = t.shot.shot.distortion;
+    auto known = detectCorridor(photo, options);
+    ASSERT_TRUE(known.ok()) << known.message();
+    ASSERT_TRUE(known->found) << name << ": " << known->notFoundReason;
+    EXPECT_EQ(known->distortion, *t.shot.shot.distortion) << name;
+    EXPECT_EQ(known->plumbLineCount, 0) << name;
+    double farWorst = 0;
+    for (int k = 0; k < 4; ++k) farWorst = std::max(farWorst, glm::length(known->corners[k].px - t.shot.shot.cornersPx[k]));
+    std::printf("[distortion] %-18s rough box, the lens known: far wall within %.2f px\n", name, farWorst);
+    EXPECT_LT(farWorst, 1.5) << name;
+
+    options.lens = RadialDistortion{};
+    auto pinhole = detectCorridor(photo, options);
+    ASSERT_TRUE(pinhole.ok()) << pinhole.message();
+    EXPECT_TRUE(pinhole->distortion.isNone()) << name << ": k1 " << pinhole->distortion.k1;
+    EXPECT_EQ(pinhole->plumbLineCount, 0) << name;
+
+    options.lens = RadialDistortion{std::nan(""), 0};
+    auto bad = detectCorridor(photo, options);
+    ASSERT_FALSE(bad.ok()) << name;
+    EXPECT_NE(bad.message().find("the lens given"), std::string::npos) << bad.message();
+  }
+}
+
 // The ground truth without distortion: detect sees none, so its shots and everything
 // made from them stay what they were (no distortion field).
 TEST(UndistortedGroundTruth, DetectFindsNoLensDistortion) {
@@ -218,6 +257,21 @@ TEST(DistortionCommands, DetectWritesTheLensAndMeasureUsesIt) {
   ASSERT_EQ(measured.exitCode, 0) << measured.output;
   const nlohmann::json m = nlohmann::json::parse(measured.output, nullptr, false);
   EXPECT_EQ(m["camera"]["distortion"]["source"], "shot") << measured.output;
+
+  // A rough shot that carries its lens (here the true one, put in by hand): --hint reads
+  // the photo through it, fits none of its own and keeps it.
+  nlohmann::json roughShot = lens;
+  roughShot["distortion"] = {{"k1", -0.2}, {"k2", 0.0}};
+  roughShot["image"] = (fs::path(PW_BINARY_DIR) / "groundtruth-distorted" / "corridor_f_k020.png").string();
+  std::ofstream(dir / "rough.json") << roughShot.dump();
+  const test::CommandRun hinted =
+      test::runCommand(photowalk + " detect --hint " + (dir / "rough.json").string() + " -o " + (dir / "fitted.json").string());
+  ASSERT_TRUE(hinted.exitCode == 0 || hinted.exitCode == 3) << hinted.output;
+  EXPECT_NE(hinted.output.find("lens distortion k1 -0.2000, k2 0.0000 (the shot's)"), std::string::npos) << hinted.output;
+  const nlohmann::json fitted = slurp(dir / "fitted.json");
+  ASSERT_TRUE(fitted.contains("distortion")) << fitted.dump();
+  EXPECT_EQ(fitted["distortion"]["k1"], -0.2);
+  EXPECT_EQ(fitted["detection"]["distortion"]["method"], "given");
 
   const test::CommandRun clean = test::runCommand(photowalk + " detect " + truth.image.string() + given + (dir / "plain.json").string());
   ASSERT_EQ(clean.exitCode, 3) << clean.output;

@@ -170,6 +170,47 @@ TEST(Document, FitCornersBringsARoughBoxOntoThePhotosEdges) {
   EXPECT_EQ(doc->shot().cornersPx, rough.cornersPx);
 }
 
+// The fit reads the photo through the lens the shot has (set in the camera panel, or
+// a calibrated camera's) and keeps it; a shot without one takes the lens the photo's
+// straight lines show, as the corners were fitted through it.
+TEST(Document, FitCornersKeepsTheShotsLensOrTakesTheOneFound) {
+  const fs::path distorted = fs::path(PW_BINARY_DIR) / "groundtruth-distorted";
+  std::ifstream in(distorted / "corridor_a_k020.json");
+  const nlohmann::json truthFile = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_TRUE(truthFile.is_object()) << "no groundtruth-distorted/corridor_a_k020.json";
+  auto doc = Document::open(distorted / "corridor_a_k020.png");
+  ASSERT_TRUE(doc.ok()) << doc.message();
+  std::array<glm::dvec2, metrology::kCornerCount> truth{};
+  Shot rough = doc->shot();
+  rough.focalPx = truthFile["focal_px"].get<double>();
+  for (int k = 0; k < metrology::kCornerCount; ++k) {
+    const auto& p = truthFile["corners_px"][metrology::cornerName(k)];
+    truth[k] = {p[0].get<double>(), p[1].get<double>()};
+    const double a = 0.7 * k + 0.3;
+    rough.cornersPx[k] = truth[k] + 10.0 * glm::dvec2(std::cos(a), std::sin(a));
+  }
+  const metrology::RadialDistortion lens{truthFile["distortion"]["k1"].get<double>(), 0.0};
+  for (const bool given : {true, false}) {
+    rough.distortion = given ? std::optional(lens) : std::nullopt;
+    doc->apply(rough, "drag");
+    const Document::FitResult fit = doc->fitCorners();
+    ASSERT_TRUE(fit.moved) << fit.message;
+    ASSERT_TRUE(doc->shot().distortion.has_value()) << fit.message;
+    if (given) {
+      EXPECT_EQ(*doc->shot().distortion, lens);
+      EXPECT_EQ(fit.message.find("found from the photo's straight lines"), std::string::npos) << fit.message;
+    } else {
+      EXPECT_NEAR(doc->shot().distortion->k1, lens.k1, 0.02);
+      EXPECT_NE(fit.message.find("found from the photo's straight lines"), std::string::npos) << fit.message;
+    }
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_LT(glm::length(doc->shot().cornersPx[k] - truth[k]), 1.5) << metrology::cornerName(k) << (given ? " (lens given)" : "");
+    }
+    ASSERT_TRUE(doc->undo());
+    EXPECT_EQ(doc->shot().distortion, rough.distortion);
+  }
+}
+
 // detect's file for a photo with vanishing points but no box opens its photo, with a
 // starting box along the points, and saves to that file.
 TEST(Document, AVanishingPointsFileOpensItsPhotoWithABoxAlongThem) {
