@@ -24,8 +24,10 @@ using metrology::detect::CorridorDetection;
 
 constexpr const char* kUsage =
     "usage: photowalk detect PHOTO -o SHOT.json [--focal-px F] [--principal-point U,V]\n"
-    "                        [--camera-height H] [--near-at-marked] [--overlay OUT.png]\n"
-    "       photowalk detect --hint ROUGH.json -o SHOT.json [--hint-reach PX] [--overlay OUT.png]\n\n"
+    "                        [--camera-height H] [--near-at-marked] [--distortion K1[,K2]]\n"
+    "                        [--overlay OUT.png]\n"
+    "       photowalk detect --hint ROUGH.json -o SHOT.json [--hint-reach PX] [--distortion K1[,K2]]\n"
+    "                        [--overlay OUT.png]\n\n"
     "Finds the corridor in the photo: its vanishing points (the Manhattan frame), the\n"
     "four receding floor and ceiling edges, the far wall's corners P1..P4 and the near\n"
     "corners P5..P8, each refined to sub-pixel precision on the image's edges, and\n"
@@ -49,6 +51,11 @@ constexpr const char* kUsage =
     "                          photo (the shot's detection.near_depth says which:\n"
     "                          image_edge or marked_cross_section; --near-at-image-edge,\n"
     "                          now the default, is still accepted)\n"
+    "  --distortion K1[,K2]    the lens's radial distortion when it is known (a calibrated\n"
+    "                          camera; OpenCV's k1, k2, normalised by the focal length):\n"
+    "                          the photo is read through it, no lens is fitted, and the\n"
+    "                          shot keeps it; 0 says the lens has none. With --hint it\n"
+    "                          takes the rough shot's distortion's place\n"
     "  --overlay OUT.png       also draw what was found on the photo (corners ringed by\n"
     "                          confidence: green >= 0.7, amber >= 0.4, red below)\n"
     "  --hint ROUGH.json       a shot whose corners a person placed roughly (within 10-20\n"
@@ -73,6 +80,23 @@ Result<glm::dvec2> parsePoint(const std::string& text, const char* option) {
   auto v = parseNumber(std::string_view(text).substr(comma + 1), option);
   if (!u || !v) return makeError(std::string(option) + " wants U,V in pixels, e.g. 399.5,299.5, not '" + text + "'");
   return glm::dvec2(*u, *v);
+}
+
+// --distortion K1[,K2]: finite, within the range shot files take (-2..2).
+Result<metrology::RadialDistortion> parseDistortion(const std::string& text) {
+  const size_t comma = text.find(',');
+  auto k1 = parseNumber(std::string_view(text).substr(0, comma), "--distortion");
+  if (!k1) return k1.error();
+  metrology::RadialDistortion lens{*k1, 0.0};
+  if (comma != std::string::npos) {
+    auto k2 = parseNumber(std::string_view(text).substr(comma + 1), "--distortion");
+    if (!k2) return k2.error();
+    lens.k2 = *k2;
+  }
+  if (!(std::abs(lens.k1) <= 2 && std::abs(lens.k2) <= 2)) {
+    return makeError("--distortion " + text + ": k1 and k2 must lie within -2..2 (OpenCV's model, normalised by the focal length)");
+  }
+  return lens;
 }
 
 json vanishingPointJson(const metrology::detect::VanishingPoint& vp) {
@@ -146,6 +170,7 @@ int runDetect(Args& args) {
   const std::optional<std::string> overlayPath = args.value("--overlay");
   const std::optional<std::string> hintPath = args.value("--hint");
   const std::optional<std::string> hintReach = args.value("--hint-reach");
+  const std::optional<std::string> lensText = args.value("--distortion");
   metrology::detect::DetectOptions options;
   options.nearAtMarkedCrossSection = args.flag("--near-at-marked");
   if (args.flag("--near-at-image-edge")) options.nearAtMarkedCrossSection = false;
@@ -180,6 +205,13 @@ int runDetect(Args& args) {
     options.hintReachPx = *r;
   }
 
+  std::optional<metrology::RadialDistortion> lensGiven;
+  if (lensText) {
+    auto lens = parseDistortion(*lensText);
+    if (!lens) return fail(lens.message());
+    lensGiven = *lens;
+  }
+
   // A rough shot: its photo, camera and other fields; its corners the hint.
   metrology::Shot shot;
   json keptFields = json::object();
@@ -193,6 +225,10 @@ int runDetect(Args& args) {
     if (!cameraHeightM) cameraHeightM = shot.cameraHeightM;
     options.lens = shot.distortion;
     keptFields.erase("detection");
+  }
+  if (lensGiven) {
+    options.lens = lensGiven;
+    shot.distortion = lensGiven;
   }
   const std::string photoPath = positionals.empty() ? shot.imagePath : positionals[0];
   std::error_code ec;
@@ -214,6 +250,9 @@ int runDetect(Args& args) {
   if (!options.focalPx && read->focal) {
     exifFocal = read->focal;
     options.focalPx = exifFocal->focalPx;
+  }
+  if (options.lens && !options.lens->isNone() && !options.focalPx) {
+    return fail("--distortion is normalised by the focal length: give it too (--focal-px F), as the photo's EXIF does not");
   }
   if (hintPath && shot.imageWidth > 0 && (shot.imageWidth != photo.cols || shot.imageHeight != photo.rows)) {
     return fail(*hintPath + ": its image_size is " + std::to_string(shot.imageWidth) + "x" +
@@ -268,8 +307,8 @@ int runDetect(Args& args) {
   std::printf("corridor vanishing point (%.2f, %.2f), confidence %.2f; focal %.1f px (%s)\n", vp.x, vp.y,
               detection->corridor.confidence, detection->focalPx, focalSource.c_str());
   if (options.lens && !options.lens->isNone()) {
-    std::printf("lens distortion %s (the shot's); the corners are the photo's\n",
-                metrology::distortionText(*options.lens).c_str());
+    std::printf("lens distortion %s (%s); the corners are the photo's\n", metrology::distortionText(*options.lens).c_str(),
+                lensGiven ? "given" : "the shot's");
   } else if (!detection->distortion.isNone()) {
     std::printf("lens distortion k1 %.4f (from %d straight lines); the corners are the photo's\n",
                 detection->distortion.k1, detection->plumbLineCount);

@@ -273,6 +273,27 @@ TEST(DistortionCommands, DetectWritesTheLensAndMeasureUsesIt) {
   EXPECT_EQ(fitted["distortion"]["k1"], -0.2);
   EXPECT_EQ(fitted["detection"]["distortion"]["method"], "given");
 
+  // A calibrated lens given on the command line: read through, not fitted, and kept.
+  const std::string distortedPhoto = (fs::path(PW_BINARY_DIR) / "groundtruth-distorted" / "corridor_f_k020.png").string();
+  const test::CommandRun calibrated =
+      test::runCommand(photowalk + " detect " + distortedPhoto + " --distortion -0.2,0" + given + (dir / "calibrated.json").string());
+  ASSERT_TRUE(calibrated.exitCode == 0 || calibrated.exitCode == 3) << calibrated.output;
+  EXPECT_NE(calibrated.output.find("lens distortion k1 -0.2000, k2 0.0000 (given)"), std::string::npos) << calibrated.output;
+  const nlohmann::json calibratedShot = slurp(dir / "calibrated.json");
+  EXPECT_EQ(calibratedShot["distortion"]["k1"], -0.2) << calibratedShot.dump();
+  EXPECT_EQ(calibratedShot["detection"]["distortion"]["method"], "given");
+  for (const char* bad : {"3", "x", "-0.1,nan"}) {
+    const test::CommandRun refused =
+        test::runCommand(photowalk + " detect " + distortedPhoto + " --distortion " + bad + given + (dir / "refused.json").string());
+    EXPECT_EQ(refused.exitCode, 1) << bad << ": " << refused.output;
+    EXPECT_NE(refused.output.find("--distortion"), std::string::npos) << refused.output;
+  }
+  EXPECT_FALSE(fs::exists(dir / "refused.json"));
+  const test::CommandRun noFocal =
+      test::runCommand(photowalk + " detect " + distortedPhoto + " --distortion -0.2 -o " + (dir / "refused.json").string());
+  EXPECT_EQ(noFocal.exitCode, 1) << noFocal.output;
+  EXPECT_NE(noFocal.output.find("normalised by the focal length"), std::string::npos) << noFocal.output;
+
   const test::CommandRun clean = test::runCommand(photowalk + " detect " + truth.image.string() + given + (dir / "plain.json").string());
   ASSERT_EQ(clean.exitCode, 3) << clean.output;
   EXPECT_EQ(clean.output.find("lens distortion"), std::string::npos) << clean.output;
