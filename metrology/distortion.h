@@ -37,6 +37,10 @@ glm::dvec2 distortPixel(const Intrinsics& camera, const glm::dvec2& pinholePx);
 // invert (beyond the radius at which it folds back) or the iteration does not settle.
 std::optional<glm::dvec2> undistortPixel(const Intrinsics& camera, const glm::dvec2& photoPx);
 
+// The largest |k1| or |k2| a shot file, `detect --distortion` and the editor take
+// (focal-normalised: far beyond any real lens).
+inline constexpr double kMaxDistortionCoefficient = 2.0;
+
 // Checks that the coefficients are finite; the message names them.
 Status checkDistortion(const RadialDistortion& lens);
 

@@ -297,7 +297,7 @@ Result<metrology::Shot> readShotFile(const fs::path& path, json* otherFields, bo
       if (!k2) return k2.error();
       d.k2 = *k2;
     }
-    if (std::abs(d.k1) > 2 || std::abs(d.k2) > 2) {
+    if (std::abs(d.k1) > metrology::kMaxDistortionCoefficient || std::abs(d.k2) > metrology::kMaxDistortionCoefficient) {
       return makeError(where + ": distortion k1 and k2 must lie within -2..2 (focal-normalised), not " +
                        metrology::distortionText(d));
     }

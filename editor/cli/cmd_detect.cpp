@@ -93,7 +93,7 @@ Result<metrology::RadialDistortion> parseDistortion(const std::string& text) {
     if (!k2) return k2.error();
     lens.k2 = *k2;
   }
-  if (!(std::abs(lens.k1) <= 2 && std::abs(lens.k2) <= 2)) {
+  if (!(std::abs(lens.k1) <= metrology::kMaxDistortionCoefficient && std::abs(lens.k2) <= metrology::kMaxDistortionCoefficient)) {
     return makeError("--distortion " + text + ": k1 and k2 must lie within -2..2 (OpenCV's model, normalised by the focal length)");
   }
   return lens;
