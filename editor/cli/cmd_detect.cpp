@@ -11,6 +11,7 @@
 #include "base/atomic_file.h"
 #include "base/input_file.h"
 #include "editor/cli/command.h"
+#include "editor/edit/detection_report.h"
 #include "modeling/exif.h"
 #include "modeling/shot_file.h"
 #include "metrology/detect/detect.h"
@@ -97,45 +98,6 @@ Result<metrology::RadialDistortion> parseDistortion(const std::string& text) {
     return makeError("--distortion " + text + ": k1 and k2 must lie within -2..2 (OpenCV's model, normalised by the focal length)");
   }
   return lens;
-}
-
-json vanishingPointJson(const metrology::detect::VanishingPoint& vp) {
-  json j;
-  if (vp.isFinite()) j["px"] = {vp.pixel().x, vp.pixel().y};
-  j["homogeneous"] = {vp.point.x, vp.point.y, vp.point.z};
-  j["confidence"] = vp.confidence;
-  j["inliers"] = vp.inlierCount;
-  j["rms_angle_deg"] = vp.rmsAngleDeg;
-  return j;
-}
-
-json detectionJson(const CorridorDetection& d, bool lensGiven) {
-  json j;
-  j["method"] = "lsd+manhattan-ransac+angular-profile+subpixel-edges+layout-net";
-  j["found"] = d.found;
-  if (!d.found) j["reason"] = d.notFoundReason;
-  j["focal_source"] = metrology::detect::focalSourceName(d.focalSource);
-  j["near_depth"] = metrology::detect::nearDepthName(d.nearDepth);
-  j["segments"] = d.segmentCount;
-  j["vanishing_points"] = {{"corridor", vanishingPointJson(d.corridor)},
-                           {"horizontal", vanishingPointJson(d.horizontal)},
-                           {"vertical", vanishingPointJson(d.vertical)}};
-  if (d.found) {
-    json corners = json::object();
-    for (int k = 0; k < metrology::kCornerCount; ++k) {
-      corners[metrology::cornerName(k)] = {{"confidence", d.corners[k].confidence}, {"sigma_px", d.corners[k].sigmaPx}};
-    }
-    j["corners"] = corners;
-  }
-  j["warnings"] = d.warnings;
-  j["confident"] = d.confident;
-  j["doubts"] = d.doubts;
-  if (lensGiven) {
-    j["distortion"] = {{"method", "given"}};
-  } else if (!d.distortion.isNone()) {
-    j["distortion"] = {{"method", "plumb-line"}, {"lines", d.plumbLineCount}};
-  }
-  return j;
 }
 
 std::string homogeneousText(const metrology::detect::VanishingPoint& vp) {
@@ -278,10 +240,8 @@ int runDetect(Args& args) {
   }
   shot.principalPointPx = detection->principalPointPx;
   shot.cameraHeightM = cameraHeightM;
-  json report = detectionJson(*detection, options.lens.has_value());
-  if (exifFocal) report["focal_source"] = "exif";
   keptFields["focal_source"] = focalSource;
-  keptFields["detection"] = report;
+  keptFields["detection"] = edit::detectionReport(*detection, options.lens.has_value(), exifFocal.has_value());
 
   if (!detection->found) {
     std::fprintf(stderr, "%s\n", escapeControls("no corridor found in " + photoPath + ": " + detection->notFoundReason).c_str());

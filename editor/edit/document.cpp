@@ -12,6 +12,7 @@
 
 #include "base/input_file.h"
 #include "editor/edit/autosave.h"
+#include "editor/edit/detection_report.h"
 #include "metrology/detect/detect.h"
 #include "modeling/image_decode.h"
 #include "modeling/shot_file.h"
@@ -76,6 +77,15 @@ std::string fixed(double value, int decimals) {
   return text;
 }
 
+// The note on detected corners (their confidences, lowest to highest).
+std::string detectedNote(double lowest, double highest) {
+  return "corners detected (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) + "): check each, the lowest first";
+}
+
+// A corner read back from a shot file is where detection put it within this (JSON keeps
+// doubles exactly: the file's corners_px and the report's px are the same numbers).
+constexpr double kSameCornerPx = 1e-6;
+
 }  // namespace
 
 Result<Document> Document::open(const fs::path& path, const OpenOptions& options) {
@@ -101,6 +111,26 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.photo_ = std::move(loaded->image);
     doc.notes_ = std::move(loaded->warnings);
     doc.otherFields_ = std::move(loaded->otherFields);
+    // Detection's report, as `detect` writes it (and the editor, for a photo it opened):
+    // each corner's confidence while it is where detection put it, and a box detection
+    // was unsure of (detect's exit 3) a suggestion while all eight are, with its doubts.
+    if (const auto report = readDetectionReport(doc.otherFields_)) {
+      double lowest = 1, highest = 0;
+      int asDetected = 0;
+      for (int k = 0; k < kCornerCount; ++k) {
+        if (!(glm::length(doc.shot_.cornersPx[k] - report->px[k]) <= kSameCornerPx)) continue;
+        doc.detectedPx_[k] = doc.shot_.cornersPx[k];
+        doc.confidence_[k] = report->confidence[k];
+        lowest = std::min(lowest, report->confidence[k]);
+        highest = std::max(highest, report->confidence[k]);
+        ++asDetected;
+      }
+      if (asDetected == kCornerCount) {
+        doc.notes_.push_back(detectedNote(lowest, highest));
+        for (const std::string& doubt : report->doubts) doc.notes_.push_back("detection unsure: " + doubt);
+        doc.suggested_ = !report->confident;
+      }
+    }
     doc.saved_ = doc.shot_;
     // The photo's EXIF, to show beside the shot's own camera (loadShot's photo is
     // oriented as shown, so the stored size is the shown one turned back).
@@ -162,8 +192,7 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
       lowest = std::min(lowest, detection->corners[k].confidence);
       highest = std::max(highest, detection->corners[k].confidence);
     }
-    doc.notes_.push_back("corners detected (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) +
-                         "): check each, the lowest first");
+    doc.notes_.push_back(detectedNote(lowest, highest));
     if (!detection->distortion.isNone()) {
       shot.distortion = detection->distortion;
       doc.notes_.push_back("lens distortion k1 " + fixed(detection->distortion.k1, 3) + " found from " +
@@ -173,6 +202,8 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     for (const std::string& warning : detection->warnings) doc.notes_.push_back("detection: " + warning);
     for (const std::string& doubt : detection->doubts) doc.notes_.push_back("detection unsure: " + doubt);
     doc.suggested_ = !detection->confident;
+    // (Saved with the shot, so that opening it again shows the same.)
+    doc.otherFields_["detection"] = detectionReport(*detection, /*lensGiven=*/false, doc.exifFocal_.has_value());
   } else {
     const std::string reason = detection ? detection->notFoundReason : detection.message();
     const int longSide = std::max(shot.imageWidth, shot.imageHeight);

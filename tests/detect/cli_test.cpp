@@ -70,6 +70,8 @@ TEST_F(DetectCommand, WritesAShotThatMeasureReads) {
     ASSERT_TRUE(doc["corners_px"].contains(name)) << name;
     const double confidence = doc["detection"]["corners"][name]["confidence"];
     EXPECT_TRUE(confidence >= 0 && confidence <= 1) << name;
+    // Where detection put it (the editor shows its confidence while it is there).
+    EXPECT_EQ(doc["detection"]["corners"][name]["px"], doc["corners_px"][name]) << name;
   }
   EXPECT_EQ(doc["detection"]["focal_source"], "given");
   EXPECT_GT(doc["detection"]["vanishing_points"]["corridor"]["confidence"].get<double>(), 0.5);

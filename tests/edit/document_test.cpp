@@ -144,6 +144,70 @@ TEST(Document, AnUnsureDetectionIsASuggestionUntilACornerMoves) {
   EXPECT_FALSE(file->isSuggestedBox());
 }
 
+// A shot file with detection's report (as `detect -o` writes it, and Save for a photo the
+// editor detected): a box detection was unsure of opens as a suggestion, with its doubts
+// in the notes and each corner's confidence, for as long as the corners are where
+// detection put them; a report of a sure box gives the confidences only; one without the
+// corners' px (written before them) is not read.
+TEST(Document, ADetectedShotFileOpensAsDetectionLeftIt) {
+  const fs::path dir = outputDir() / "detected_file";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  auto unsure = Document::open(groundtruth::loadGroundTruth("clutter_1").image);
+  ASSERT_TRUE(unsure.ok()) << unsure.message();
+  ASSERT_TRUE(unsure->isSuggestedBox()) << "clutter_1: detection should be unsure of its box";
+  const fs::path unsureFile = dir / "unsure.shot.json";
+  ASSERT_TRUE(unsure->saveCopy(unsureFile).ok());
+  const nlohmann::json written = nlohmann::json::parse(bytesOf(unsureFile));
+  ASSERT_TRUE(written.contains("detection")) << written.dump();
+  EXPECT_FALSE(written["detection"]["confident"].get<bool>());
+
+  auto reopened = Document::open(unsureFile);
+  ASSERT_TRUE(reopened.ok()) << reopened.message();
+  EXPECT_TRUE(reopened->isSuggestedBox());
+  const std::vector<std::string> notes = reopened->notes();
+  for (const auto& doubt : written["detection"]["doubts"]) {
+    EXPECT_NE(std::find(notes.begin(), notes.end(), "detection unsure: " + doubt.get<std::string>()), notes.end())
+        << doubt;
+  }
+  for (int k = 0; k < metrology::kCornerCount; ++k) {
+    ASSERT_TRUE(reopened->detectionConfidence(k).has_value()) << metrology::cornerName(k);
+    EXPECT_EQ(*reopened->detectionConfidence(k), *unsure->detectionConfidence(k)) << metrology::cornerName(k);
+  }
+  // A corner moved and saved: no longer a suggestion when opened again; the moved
+  // corner has no confidence, the others keep theirs.
+  Shot moved = reopened->shot();
+  moved.cornersPx[metrology::P2] += glm::dvec2(3, 0);
+  reopened->apply(moved, "move P2");
+  EXPECT_FALSE(reopened->isSuggestedBox());
+  ASSERT_TRUE(reopened->save().ok());
+  auto edited = Document::open(unsureFile);
+  ASSERT_TRUE(edited.ok()) << edited.message();
+  EXPECT_FALSE(edited->isSuggestedBox());
+  EXPECT_FALSE(edited->detectionConfidence(metrology::P2).has_value());
+  EXPECT_TRUE(edited->detectionConfidence(metrology::P1).has_value());
+
+  // A sure box: its confidences, no suggestion.
+  auto sure = Document::open(groundtruth::loadGroundTruth("corridor_b").image);
+  ASSERT_TRUE(sure.ok());
+  const fs::path sureFile = dir / "sure.shot.json";
+  ASSERT_TRUE(sure->saveCopy(sureFile).ok());
+  auto sureAgain = Document::open(sureFile);
+  ASSERT_TRUE(sureAgain.ok()) << sureAgain.message();
+  EXPECT_FALSE(sureAgain->isSuggestedBox());
+  EXPECT_TRUE(sureAgain->detectionConfidence(metrology::P4).has_value());
+
+  // A report without the corners' px (detect before they were written): not read.
+  nlohmann::json older = written;
+  for (auto& corner : older["detection"]["corners"]) corner.erase("px");
+  const fs::path olderFile = dir / "older.shot.json";
+  ASSERT_TRUE(writeFileAtomic(olderFile, older.dump(2)).ok());
+  auto olderDoc = Document::open(olderFile);
+  ASSERT_TRUE(olderDoc.ok()) << olderDoc.message();
+  EXPECT_FALSE(olderDoc->isSuggestedBox());
+  EXPECT_FALSE(olderDoc->detectionConfidence(metrology::P1).has_value());
+}
+
 // E in the editor: corners a person put roughly (each 15 px off) fitted to the photo's
 // edges from where they are, as one undo step, with their confidences shown again.
 TEST(Document, FitCornersBringsARoughBoxOntoThePhotosEdges) {
