@@ -1728,6 +1728,82 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
                                        const std::vector<LineSegment>& segments, const DetectOptions& options,
                                        glm::dvec2 pp);
 
+// A far wall and its reflection in the floor, taken for one far wall, has the horizon at
+// (c + h) / 2h of its height up from its foot (c the camera's height, h the wall's): with
+// the camera at least a sixth of the way up (every random scene; 1 m in a 6 m corridor),
+// at 0.58 or more. (The random TUNE scenes' 13 such boxes: 0.59-0.85. A true far wall has
+// the horizon at c / h: 0.54 in the project's corridor_a, 1.5 m in 2.8 m.)
+constexpr double kMinReflectedHorizonShare = 0.58;
+
+// The far wall of `d` with its foot half way up (full-resolution pixels, P1..P8; P5..P8
+// at the nearest section inside the photo), where the horizon crosses the far wall
+// kMinReflectedHorizonShare of the way up or higher: what the true far wall would be were
+// the one found a far wall and its reflection in a glossy floor; nullopt otherwise.
+std::optional<std::array<glm::dvec2, 8>> halfFootBox(const CorridorDetection& d, cv::Size size) {
+  std::array<glm::dvec2, 8> c = cornerPixels(d);
+  const glm::dvec2 down = directionTowards(d.vertical.point, c[P1], {0, 1});
+  const double height = glm::dot(c[P3] - c[P1], down);
+  const auto horizon = intersect(lineThrough(homogeneous(d.corridor.pixel()), d.horizontal.point),
+                                 lineThrough(homogeneous(c[P1]), d.vertical.point));
+  if (!(height > 0) || !horizon || !(glm::dot(c[P3] - *horizon, down) >= kMinReflectedHorizonShare * height)) {
+    return std::nullopt;
+  }
+  c[P3] = c[P1] + 0.5 * height * down;
+  const auto p4 =
+      intersect(lineThrough(homogeneous(c[P3]), d.horizontal.point), lineThrough(homogeneous(c[P2]), d.vertical.point));
+  if (!p4) return std::nullopt;
+  c[P4] = *p4;
+  const auto near = nearestSectionInside(d, {c[P1], c[P2], c[P3], c[P4]}, size);
+  if (!near) return std::nullopt;
+  setNearCorners(c, *near);
+  for (const glm::dvec2& p : c)
+    if (!(std::isfinite(p.x) && std::isfinite(p.y))) return std::nullopt;
+  return c;
+}
+
+// A sure answer of the edges that may be a far wall and its reflection in a mirror-like
+// floor: there the reflection is as plain as the wall, so the floor's true boundaries and
+// the foot half way down divide no surfaces and reflectedFoot does not see it, and both
+// fits find the same doubled far wall (the random TUNE scenes' two sure answers tens of
+// pixels off: 589 and 1394, of 340 sure answers, clean and noisy). Where the horizon
+// crosses the far wall high enough for that (halfFootBox: 18 of the 340), the layout
+// network looks at the whole photo, and where it finds the far wall with its foot half way
+// up likelier than the one found, that box, fitted to the edges as a person's rough box is
+// (`fitToEdges`; as put where the fit strays from it), replaces the answer, a guess. On
+// TUNE the two reflections had the half-foot box likelier by 0.27 and 1.71 (mean
+// log-probability per pixel), every right sure answer with the horizon above the far
+// wall's middle less likely by 0.47 or more. (The far wall's neighbourhood's look agreed,
+// 0.23 and 1.22 against -0.23 or less; it is not asked: the whole photo's look alone is
+// half the networks' time, some 40 ms at 12 MP on two cores.)
+std::optional<CorridorDetection> unreflectedSure(
+    const CorridorDetection& edges, const std::function<Result<CorridorDetection>(const std::array<glm::dvec2, 8>&)>& fitToEdges,
+    const WorkingImage& work, glm::dvec2 pp, const PinholeView& photo) {
+  const auto half = halfFootBox(edges, photo.size());
+  if (!half) return std::nullopt;
+  const CorridorAxes axes = corridorAxes(edges.horizontal.point, edges.vertical.point, edges.corridor.point, edges.focalPx, pp);
+  const auto looked = lookAtWholePhoto(work.bgr, work.scale, edges.focalPx, pp, axes);
+  if (!looked) return std::nullopt;
+  const auto score = [&](const std::array<glm::dvec2, 8>& c) {
+    return boxScore(*looked, {c[P1], c[P2], c[P3], c[P4]}, edges.focalPx, pp, axes, /*zoomed=*/false);
+  };
+  const auto foundScore = score(cornerPixels(edges)), halfScore = score(*half);
+  if (!foundScore || !halfScore || !(*halfScore > *foundScore)) return std::nullopt;
+  char figures[160];
+  std::snprintf(figures, sizeof figures, "log-probability per pixel %.2f against %.2f", *halfScore, *foundScore);
+  const std::string why = "the far wall found may reach down into its reflection in a glossy floor: the layout network "
+                          "finds it likelier with its foot half way down (" + std::string(figures) + "): that box";
+  const Result<CorridorDetection> fitted = fitToEdges(*half);
+  if (fitHolds(fitted) && farWallMedianDistancePx(cornerPixels(*fitted), *half) <= kLayoutFitStraysPx) {
+    return layoutFitted(edges, *fitted, why + " fitted to the edges");
+  }
+  CorridorDetection out = edges;
+  for (int k = 0; k < kCornerCount; ++k) out.corners[k] = {(*half)[k], 0.0, kLayoutGuessSigmaPx};
+  out.confident = false;
+  out.doubts.clear();
+  doubt(out, why + " (the edges do not bear it out)");
+  return out;
+}
+
 // A person's rough box (options.hintPx) fitted to the photo's edges (fromHint), weighed
 // against detection's own answer where that answer's far corners each lie within reach
 // of the person's: where the two far walls agree within kHintAgreesPx, the fit's corners
@@ -1780,7 +1856,23 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
                                        glm::dvec2 pp) {
   if (options.hintPx) return fitRoughBox(photo, work, segments, options, pp);
   auto byEdges = findCorridorByEdges(photo, work, segments, options, pp);
-  if (!byEdges || !byEdges->hasVanishingPoints || (byEdges->found && byEdges->confident)) return byEdges;
+  if (!byEdges || !byEdges->hasVanishingPoints) return byEdges;
+  // A rough box fitted to the edges as a person's is (detect --hint), P5..P8 at the
+  // nearest depth inside the photo.
+  const auto fitBoxToEdges = [&](const std::array<glm::dvec2, 8>& box, double reachPx) {
+    DetectOptions fromBox = options;
+    fromBox.hintPx = box;
+    fromBox.hintReachPx = reachPx;
+    fromBox.focalPx = byEdges->focalPx;
+    fromBox.hintNearDepthGiven = false;
+    return findCorridorByEdges(photo, work, segments, fromBox, pp);
+  };
+  if (byEdges->found && byEdges->confident) {
+    auto unreflected = unreflectedSure(
+        *byEdges, [&](const std::array<glm::dvec2, 8>& box) { return fitBoxToEdges(box, kLayoutFitReachPx); }, work, pp,
+        photo);
+    return unreflected ? std::move(*unreflected) : std::move(*byEdges);
+  }
   const CorridorAxes axes =
       corridorAxes(byEdges->horizontal.point, byEdges->vertical.point, byEdges->corridor.point, byEdges->focalPx, pp);
   const auto fit = fitLayout(work.bgr, work.scale, byEdges->focalPx, pp, axes);
@@ -1795,15 +1887,8 @@ Result<CorridorDetection> findCorridor(const PinholeView& photo, const WorkingIm
     byEdges->doubts.clear();
     return byEdges;
   }
-  // The network's box fitted to the edges as a person's rough box is (detect --hint).
-  const auto fitToEdges = [&](double reachPx) {
-    DetectOptions fromLayout = options;
-    fromLayout.hintPx = *layout;
-    fromLayout.hintReachPx = reachPx;
-    fromLayout.focalPx = byEdges->focalPx;
-    fromLayout.hintNearDepthGiven = false;
-    return findCorridorByEdges(photo, work, segments, fromLayout, pp);
-  };
+  // The network's box fitted to the edges as a person's rough box is.
+  const auto fitToEdges = [&](double reachPx) { return fitBoxToEdges(*layout, reachPx); };
   // Over an unsure answer of the edges, only where the network finds that answer's far
   // wall far less likely than its own: where a photo is unlike the scenes it learnt
   // from, the network can take a door at the far end for the far wall, and the door's

@@ -320,6 +320,21 @@ std::optional<LayoutFit> fitLayout(const cv::Mat& bgr, double workScale, double 
   }
 }
 
+std::optional<LayoutFit> lookAtWholePhoto(const cv::Mat& bgr, double workScale, double focalPx, glm::dvec2 principalPx,
+                                          const CorridorAxes& axes) {
+  if (bgr.empty() || bgr.type() != CV_8UC3) return std::nullopt;
+  try {
+    const double shrink = static_cast<double>(kInputSide) / std::max(bgr.cols, bgr.rows);
+    auto looks = std::make_shared<LayoutLooks>();
+    looks->whole = look(wholeNet(), bgr, workScale, 0, 0, shrink, focalPx, principalPx, axes);
+    LayoutFit fit;
+    fit.looks = looks;
+    return fit;
+  } catch (const cv::Exception&) {
+    return std::nullopt;
+  }
+}
+
 std::optional<std::array<glm::dvec2, 8>> layoutCorners(const LayoutFit& fit, double focalPx, glm::dvec2 principalPx,
                                                        const CorridorAxes& axes, cv::Size size, double marginPx) {
   // P1 P2 P3 P4, and the near section's P5 P6 P7 P8 on the same rays.

@@ -10,9 +10,11 @@
 // like those they learnt from, and can be tens of pixels off on others (a door at the far
 // end taken for the far wall): detection uses the box to confirm an answer of the
 // edges, as a person's rough box to be fitted to the edges where those found none, and,
-// where that fit fails too, as an unsure guess of its own, and in place of an unsure
-// answer of the edges whose far wall it finds far less likely than its own box (boxScore;
-// detect.cpp: findCorridor, layoutGuess and layoutOverEdges).
+// where that fit fails too, as an unsure guess of its own, in place of an unsure answer
+// of the edges whose far wall it finds far less likely than its own box (boxScore;
+// detect.cpp: findCorridor, layoutGuess and layoutOverEdges), and, the whole photo's look
+// alone, to tell a sure answer's far wall from a far wall and its reflection in a glossy
+// floor (lookAtWholePhoto; detect.cpp: unreflectedSure).
 #pragma once
 
 #include <array>
@@ -62,6 +64,12 @@ std::optional<double> boxScore(const LayoutFit& fit, const std::array<glm::dvec2
 // nullopt when the network finds no far wall around the vanishing point.
 std::optional<LayoutFit> fitLayout(const cv::Mat& bgr, double workScale, double focalPx, glm::dvec2 principalPx,
                                    const CorridorAxes& axes);
+
+// The whole photo's look alone, about half fitLayout's work: no box fitted (the fit's
+// sides and scores are 0), no neighbourhood looked at; for boxScore's whole-photo score
+// (`zoomed` false) of boxes found otherwise. nullopt where the network cannot run.
+std::optional<LayoutFit> lookAtWholePhoto(const cv::Mat& bgr, double workScale, double focalPx, glm::dvec2 principalPx,
+                                          const CorridorAxes& axes);
 
 // P1..P4 of `fit` (full-resolution pixels), and P5..P8 at the nearest cross-section
 // whose four corners lie `marginPx` inside a photo of `size` (nullopt when none does).
