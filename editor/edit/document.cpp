@@ -77,11 +77,6 @@ std::string fixed(double value, int decimals) {
   return text;
 }
 
-// The note on detected corners (their confidences, lowest to highest).
-std::string detectedNote(double lowest, double highest) {
-  return "corners detected (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) + "): check each, the lowest first";
-}
-
 // A corner read back from a shot file is where detection put it within this (JSON keeps
 // doubles exactly: the file's corners_px and the report's px are the same numbers).
 constexpr double kSameCornerPx = 1e-6;
@@ -111,26 +106,8 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
     doc.photo_ = std::move(loaded->image);
     doc.notes_ = std::move(loaded->warnings);
     doc.otherFields_ = std::move(loaded->otherFields);
-    // Detection's report, as `detect` writes it (and the editor, for a photo it opened):
-    // each corner's confidence while it is where detection put it, and a box detection
-    // was unsure of (detect's exit 3) a suggestion while all eight are, with its doubts.
-    if (const auto report = readDetectionReport(doc.otherFields_)) {
-      double lowest = 1, highest = 0;
-      int asDetected = 0;
-      for (int k = 0; k < kCornerCount; ++k) {
-        if (!(glm::length(doc.shot_.cornersPx[k] - report->px[k]) <= kSameCornerPx)) continue;
-        doc.detectedPx_[k] = doc.shot_.cornersPx[k];
-        doc.confidence_[k] = report->confidence[k];
-        lowest = std::min(lowest, report->confidence[k]);
-        highest = std::max(highest, report->confidence[k]);
-        ++asDetected;
-      }
-      if (asDetected == kCornerCount) {
-        doc.notes_.push_back(detectedNote(lowest, highest));
-        for (const std::string& doubt : report->doubts) doc.notes_.push_back("detection unsure: " + doubt);
-        doc.suggested_ = !report->confident;
-      }
-    }
+    // Detection's report, as `detect` writes it (and the editor, for a photo it opened).
+    if (const auto report = readDetectionReport(doc.otherFields_)) doc.takeDetection(*report);
     doc.saved_ = doc.shot_;
     // The photo's EXIF, to show beside the shot's own camera (loadShot's photo is
     // oriented as shown, so the stored size is the shown one turned back).
@@ -184,15 +161,11 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
                                    ? "detection: from the vanishing points"
                                    : "default: a 28 mm-equivalent lens";
     }
-    double lowest = 1, highest = 0;
-    for (int k = 0; k < kCornerCount; ++k) {
-      shot.cornersPx[k] = detection->corners[k].px;
-      doc.detectedPx_[k] = shot.cornersPx[k];
-      doc.confidence_[k] = detection->corners[k].confidence;
-      lowest = std::min(lowest, detection->corners[k].confidence);
-      highest = std::max(highest, detection->corners[k].confidence);
-    }
-    doc.notes_.push_back(detectedNote(lowest, highest));
+    for (int k = 0; k < kCornerCount; ++k) shot.cornersPx[k] = detection->corners[k].px;
+    // The report, saved with the shot, read as a shot file's is: opening the saved file
+    // again shows the same.
+    doc.otherFields_["detection"] = detectionReport(*detection, /*lensGiven=*/false, doc.exifFocal_.has_value());
+    if (const auto report = readDetectionReport(doc.otherFields_)) doc.takeDetection(*report);
     if (!detection->distortion.isNone()) {
       shot.distortion = detection->distortion;
       doc.notes_.push_back("lens distortion k1 " + fixed(detection->distortion.k1, 3) + " found from " +
@@ -200,10 +173,6 @@ Result<Document> Document::open(const fs::path& path, const OpenOptions& options
                            "the lens shows them");
     }
     for (const std::string& warning : detection->warnings) doc.notes_.push_back("detection: " + warning);
-    for (const std::string& doubt : detection->doubts) doc.notes_.push_back("detection unsure: " + doubt);
-    doc.suggested_ = !detection->confident;
-    // (Saved with the shot, so that opening it again shows the same.)
-    doc.otherFields_["detection"] = detectionReport(*detection, /*lensGiven=*/false, doc.exifFocal_.has_value());
   } else {
     const std::string reason = detection ? detection->notFoundReason : detection.message();
     const int longSide = std::max(shot.imageWidth, shot.imageHeight);
@@ -242,6 +211,24 @@ std::vector<std::string> Document::notes() const {
 bool Document::isPlaceholderBox() const { return placeholder_ && shot_.cornersPx == opened_.cornersPx; }
 
 bool Document::isSuggestedBox() const { return suggested_ && shot_.cornersPx == opened_.cornersPx; }
+
+void Document::takeDetection(const DetectionReport& report) {
+  double lowest = 1, highest = 0;
+  int asDetected = 0;
+  for (int k = 0; k < kCornerCount; ++k) {
+    if (!(glm::length(shot_.cornersPx[k] - report.px[k]) <= kSameCornerPx)) continue;
+    detectedPx_[k] = shot_.cornersPx[k];
+    confidence_[k] = report.confidence[k];
+    lowest = std::min(lowest, report.confidence[k]);
+    highest = std::max(highest, report.confidence[k]);
+    ++asDetected;
+  }
+  if (asDetected < kCornerCount) return;
+  notes_.push_back("corners detected (confidence " + fixed(lowest, 2) + " to " + fixed(highest, 2) +
+                   "): check each, the lowest first");
+  for (const std::string& doubt : report.doubts) notes_.push_back("detection unsure: " + doubt);
+  suggested_ = !report.confident;
+}
 
 std::optional<double> Document::detectionConfidence(int corner) const {
   if (corner < 0 || corner >= kCornerCount || !confidence_[corner]) return std::nullopt;

@@ -24,6 +24,8 @@
 
 namespace pw::edit {
 
+struct DetectionReport;
+
 // Undo and redo as whole shots: a shot is a few hundred bytes, so each step keeps the
 // state before and after, and undoing everything then redoing everything restores
 // the very same numbers (hence byte-identical files).
@@ -151,6 +153,10 @@ class Document {
 
  private:
   void removeAutosave() const;  // the side file of path(), once saved
+  // Detection's report (a shot file's, or the one made for a photo opened alone): each
+  // corner's confidence while the shot's corner is where detection put it, and, where all
+  // eight are, the note on them, the doubts, and a box detection was unsure of a suggestion.
+  void takeDetection(const DetectionReport& report);
 
   std::filesystem::path path_;
   metrology::Shot shot_;

@@ -1136,6 +1136,24 @@ void aboveCeilingBand(CorridorDetection& d, const WorkingImage& work, glm::dvec2
   doubt(d, "the far wall's top was taken at the upper edge of a band under the ceiling");
 }
 
+// The far wall `far` (P1 P2 P3 P4) with its foot half way up, where it is at least
+// `minHeight` high along its sides and the horizon (through `vp` and the horizontal point)
+// crosses it more than `minHorizonShare` of its height up from its foot: the true far wall
+// were `far` a far wall and its reflection in the floor (that puts the horizon above its
+// middle). Points homogeneous or not in one frame; nullopt otherwise.
+std::optional<Quad> halfWayFoot(const Quad& far, glm::dvec2 vp, glm::dvec3 horizontal, glm::dvec3 vertical,
+                                double minHorizonShare, double minHeight) {
+  const glm::dvec2 down = directionTowards(vertical, far[0], {0, 1});
+  const double height = glm::dot(far[2] - far[0], down);
+  if (!(height > minHeight)) return std::nullopt;
+  const auto horizon = intersect(lineThrough(homogeneous(vp), horizontal), lineThrough(homogeneous(far[0]), vertical));
+  if (!horizon || !(glm::dot(far[2] - *horizon, down) > minHorizonShare * height)) return std::nullopt;
+  const glm::dvec2 p3 = far[0] + 0.5 * height * down;
+  const auto p4 = intersect(lineThrough(homogeneous(p3), horizontal), lineThrough(homogeneous(far[1]), vertical));
+  if (!p4) return std::nullopt;
+  return Quad{far[0], far[1], p3, *p4};
+}
+
 // A far wall found together with its reflection in a glossy floor: the walls mirror
 // about their foot, so the box drawn from the ceiling's lines down to their reflections
 // has its foot at the reflection of its top, and the true foot half way down (between
@@ -1151,23 +1169,19 @@ void aboveCeilingBand(CorridorDetection& d, const WorkingImage& work, glm::dvec2
 // (working pixels), or nullopt.
 std::optional<Quad> reflectedFoot(const WorkingImage& work, glm::dvec2 vp, glm::dvec3 horizontal, glm::dvec3 vertical,
                                   const Quad& far) {
-  const glm::dvec2 down = directionTowards(vertical, far[0], {0, 1});
-  const double height = glm::dot(far[2] - far[0], down);
-  if (!(height > 20)) return std::nullopt;
-  const auto horizon = intersect(lineThrough(homogeneous(vp), horizontal), lineThrough(homogeneous(far[0]), vertical));
-  if (!horizon || !(glm::dot(far[2] - *horizon, down) > 0.5 * height)) return std::nullopt;
-  const glm::dvec2 p3 = far[0] + 0.5 * height * down;
-  const auto p4 = intersect(lineThrough(homogeneous(p3), horizontal), lineThrough(homogeneous(far[1]), vertical));
-  if (!p4 || surfaceStep(work, p3, *p4).share < kMirrorFootShare) return std::nullopt;
+  const auto half = halfWayFoot(far, vp, horizontal, vertical, 0.5, 20);
+  if (!half) return std::nullopt;
+  const glm::dvec2 p3 = (*half)[2], p4 = (*half)[3];
+  if (surfaceStep(work, p3, p4).share < kMirrorFootShare) return std::nullopt;
   const double shortSide = std::min(work.bgr.cols, work.bgr.rows);
-  for (const glm::dvec2& corner : {p3, *p4}) {
+  for (const glm::dvec2& corner : {p3, p4}) {
     const glm::dvec2 out = glm::normalize(corner - vp);
     const double length = std::min(0.3 * shortSide, distanceToBorder(work, corner, out) - 8);
     if (!(length > 10) || surfaceStep(work, corner + 3.0 * out, corner + length * out).share < kMirrorFootShare) {
       return std::nullopt;
     }
   }
-  return Quad{far[0], far[1], p3, *p4};
+  return half;
 }
 
 // Below this share of its length with edges along it, a boundary found near where a
@@ -1737,23 +1751,15 @@ constexpr double kMinReflectedHorizonShare = 0.58;
 
 // The far wall of `d` with its foot half way up (full-resolution pixels, P1..P8; P5..P8
 // at the nearest section inside the photo), where the horizon crosses the far wall
-// kMinReflectedHorizonShare of the way up or higher: what the true far wall would be were
+// more than kMinReflectedHorizonShare of the way up: what the true far wall would be were
 // the one found a far wall and its reflection in a glossy floor; nullopt otherwise.
 std::optional<std::array<glm::dvec2, 8>> halfFootBox(const CorridorDetection& d, cv::Size size) {
   std::array<glm::dvec2, 8> c = cornerPixels(d);
-  const glm::dvec2 down = directionTowards(d.vertical.point, c[P1], {0, 1});
-  const double height = glm::dot(c[P3] - c[P1], down);
-  const auto horizon = intersect(lineThrough(homogeneous(d.corridor.pixel()), d.horizontal.point),
-                                 lineThrough(homogeneous(c[P1]), d.vertical.point));
-  if (!(height > 0) || !horizon || !(glm::dot(c[P3] - *horizon, down) >= kMinReflectedHorizonShare * height)) {
-    return std::nullopt;
-  }
-  c[P3] = c[P1] + 0.5 * height * down;
-  const auto p4 =
-      intersect(lineThrough(homogeneous(c[P3]), d.horizontal.point), lineThrough(homogeneous(c[P2]), d.vertical.point));
-  if (!p4) return std::nullopt;
-  c[P4] = *p4;
-  const auto near = nearestSectionInside(d, {c[P1], c[P2], c[P3], c[P4]}, size);
+  const auto half = halfWayFoot({c[P1], c[P2], c[P3], c[P4]}, d.corridor.pixel(), d.horizontal.point, d.vertical.point,
+                                kMinReflectedHorizonShare, 0);
+  if (!half) return std::nullopt;
+  c[P3] = (*half)[2], c[P4] = (*half)[3];
+  const auto near = nearestSectionInside(d, *half, size);
   if (!near) return std::nullopt;
   setNearCorners(c, *near);
   for (const glm::dvec2& p : c)
